@@ -1,0 +1,58 @@
+#include "drum/io/atomicFile.hpp"
+
+#include "drum/io/inputError.hpp"
+
+#include <system_error>
+#include <unistd.h>
+
+namespace drum
+{
+
+AtomicFile::AtomicFile(std::filesystem::path target)
+:
+    target_(std::move(target)),
+    temp_(target_.parent_path()
+        / ("." + target_.filename().string() + ".tmp" + std::to_string(::getpid())))
+{
+    if (!target_.parent_path().empty())
+    {
+        std::filesystem::create_directories(target_.parent_path());
+    }
+    out_.open(temp_);
+    if (!out_)
+    {
+        throw std::runtime_error("cannot open " + temp_.string() + " for writing");
+    }
+    out_.precision(10);
+}
+
+AtomicFile::~AtomicFile()
+{
+    if (!committed_)
+    {
+        out_.close();
+        std::error_code ec;
+        std::filesystem::remove(temp_, ec);
+    }
+}
+
+void AtomicFile::commit()
+{
+    out_.flush();
+    if (!out_)
+    {
+        throw std::runtime_error("writing " + temp_.string() + " failed");
+    }
+    out_.close();
+    std::filesystem::rename(temp_, target_);
+    committed_ = true;
+}
+
+void writeFileAtomically(const std::filesystem::path& path, const std::string& text)
+{
+    AtomicFile f(path);
+    f.stream() << text;
+    f.commit();
+}
+
+} // namespace drum

@@ -1,0 +1,29 @@
+// Air properties at 1 atm, as coded by Sherritt 1991 (ROUTINES.C, digest 2.11)
+#ifndef PARTICLEDRAG_GASPROPERTIES_HPP
+#define PARTICLEDRAG_GASPROPERTIES_HPP
+
+namespace particleDrag
+{
+
+//- Standard gravity used throughout (Sherritt's code: GRAVITY = 9.81)
+constexpr double gravity = 9.81;
+
+//- Air density [kg/m3] at 1 atm: rho = 354.3/(T_C + 273.15), T_C in degC
+double airDensity(double temperatureC);
+
+//- Air viscosity [Pa s], Sutherland form of airvisc():
+//  mu = 2.4e-5 ((423.15 + 120)/(T_K + 120)) (T_K/423.15)^1.5
+double airViscosity(double temperatureC);
+
+//- A gas: density and dynamic viscosity
+struct Gas
+{
+    double density = 1.2086;      //!< kg/m3 (air at 20 degC)
+    double viscosity = 1.8194e-5; //!< Pa s  (air at 20 degC)
+
+    static Gas air(double temperatureC);
+};
+
+} // namespace particleDrag
+
+#endif
