@@ -1,0 +1,134 @@
+// Reading Sherritt's wind-tunnel tables, and refusing malformed ones
+#include "drum/io/inputError.hpp"
+#include "drum/windTunnel/windTunnelData.hpp"
+
+#include "particleDrag/loneParticleFall.hpp"
+#include "particleDrag/sheetVelocity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+using namespace drum;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+fs::path dataDir()
+{
+    const char* env = std::getenv("DRYER_DATA");
+    return env ? env : DRYER_DATA_DIR;
+}
+
+// A scratch file with the given text, removed at scope exit
+struct TempCsv
+{
+    fs::path path;
+    explicit TempCsv(const std::string& text)
+    :
+        path(fs::temp_directory_path()
+           / ("windTunnelTest_" + std::to_string(std::rand()) + ".csv"))
+    {
+        std::ofstream(path) << text;
+    }
+    ~TempCsv() { fs::remove(path); }
+};
+
+std::string expectInputError(const std::function<void()>& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+    ADD_FAILURE() << "no InputError";
+    return "";
+}
+
+} // namespace
+
+TEST(WindTunnelData, ReadsSharedTables)
+{
+    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    ASSERT_EQ(materials.size(), 3u);
+    const auto& sand = materials.at("sand");
+    EXPECT_DOUBLE_EQ(sand.particleDensity, 2650.0);
+    ASSERT_EQ(sand.classes.size(), 7u);
+    // Open top bin closed at 4760 um: geometric mean 3366 um
+    EXPECT_NEAR(sand.classes.front().diameter, std::sqrt(2380.0*4760.0)*1e-6, 1e-12);
+    EXPECT_NEAR(sand.classes.back().diameter, std::sqrt(37.0*74.0)*1e-6, 1e-10);
+    double sum = 0;
+    for (const auto& c : sand.classes) sum += c.massFraction;
+    EXPECT_NEAR(sum, 1.0, 1e-12);
+
+    const auto tests = readWindTunnelTests(dataDir()/"windtunnel_tests.csv", materials);
+    EXPECT_EQ(tests.size(), 69u);
+    for (const auto& t : tests)
+    {
+        EXPECT_TRUE(t.fallHeight == 10.3 || t.fallHeight == 6.6) << t.test;
+    }
+    EXPECT_EQ(readMeasuredAdvance(dataDir()/"windtunnel_tests.csv").size(), 69u);
+}
+
+TEST(WindTunnelData, TestReaderIgnoresTheMeasuredAdvance)
+{
+    // A tests file without any measured column is complete input
+    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    TempCsv f("test,material,air_velocity_m_s,spill_rate_kg_m_s,flight_length_m,fall_height_m\n"
+              "1,sand,4.0,24.0,1.0,10.3\n");
+    const auto tests = readWindTunnelTests(f.path, materials);
+    ASSERT_EQ(tests.size(), 1u);
+    EXPECT_DOUBLE_EQ(tests[0].spillRate, 24.0);
+}
+
+TEST(WindTunnelData, MalformedFilesAreRefusedNamingTheProblem)
+{
+    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    const std::string header =
+        "test,material,air_velocity_m_s,spill_rate_kg_m_s,flight_length_m,fall_height_m\n";
+
+    {
+        TempCsv f(header + "7,granite,4.0,24.0,1.0,10.3\n");
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("unknown material 'granite'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("test 7"), std::string::npos) << msg;
+        EXPECT_NE(msg.find(f.path.string()), std::string::npos) << msg;
+    }
+    {
+        TempCsv f(header + "8,sand,-4.0,24.0,1.0,10.3\n");
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("air_velocity_m_s"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("allowed range"), std::string::npos) << msg;
+    }
+    {
+        TempCsv f(header + "9,sand,4.0,abc,1.0,10.3\n");
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("spill_rate_kg_m_s"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("not a number"), std::string::npos) << msg;
+    }
+    {
+        // A column missing from the header
+        TempCsv f("test,material,air_velocity_m_s,flight_length_m,fall_height_m\n1,sand,4,1,10.3\n");
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("spill_rate_kg_m_s"), std::string::npos) << msg;
+    }
+    {
+        // Truncated row
+        TempCsv f(header + "10,sand,4.0\n");
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("malformed CSV"), std::string::npos) << msg;
+    }
+    {
+        TempCsv f(header);
+        const auto msg = expectInputError([&] { readWindTunnelTests(f.path, materials); });
+        EXPECT_NE(msg.find("no test rows"), std::string::npos) << msg;
+    }
+    const auto msg = expectInputError([&] { readWindTunnelTests("/nonexistent/tests.csv", materials); });
+    EXPECT_NE(msg.find("file not found"), std::string::npos) << msg;
+}
