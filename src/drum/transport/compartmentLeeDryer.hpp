@@ -1,0 +1,60 @@
+// Lee's (2008) dryer model assembled from slice to network: slice
+// parameters from the App. 10.2.3 correlations ("Lee correlations" option),
+// the moisture/angle-of-repose profile of Eqs 7.2-7.3 (or a constant angle,
+// as in the response studies of Tables 7.6-7.10), and the three fitted
+// parameters t_kiln, C_B, C_F^G.
+#ifndef DRUM_TRANSPORT_COMPARTMENTLEEDRYER_HPP
+#define DRUM_TRANSPORT_COMPARTMENTLEEDRYER_HPP
+
+#include "drum/transport/compartmentCorrelations.hpp"
+#include "drum/transport/compartmentNetwork.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace drum
+{
+
+//- Operating data and geometry (defaults: Invicta Mill dryer No. 2 as in the
+//  gPROMS process entity, digest lee2008.md §4.2)
+struct LeeDryer
+{
+    double length = 12.0;            //!< L, m
+    double rpm = 3.0;                //!< drum speed, rev/min
+    double slopeDeg = 2.8;           //!< theta, deg
+    double feedRate = 98000.0/3600.0;  //!< kg/s
+    double bulkDensity = 940.0;      //!< rho_b, kg/m3 (code value)
+    LeeFlightGeometry geometry;
+    double moistureInlet = 0.02;     //!< w at the feed end, kg/kg (code value)
+    double moistureOutlet = 0.002;   //!< w at the discharge end, kg/kg
+    std::optional<double> constantPhiDeg;  //!< when set, phi is this everywhere
+    double fLoad = 1.0;              //!< flight loading factor (fixed at 1 by Lee)
+    double designLoadMultiplier = 1.0;   //!< Table 7.10 study: M_des scaled
+};
+
+//- The fitted parameters of Lee 2008 Ch. 7 (Table 7.2)
+struct LeeParameters
+{
+    double kilnTime;        //!< t_kiln, s
+    double backFraction;    //!< C_B
+    double dragFactor;      //!< C_F^G (Eq 3.8: C_F = C_F^0 C_F^G)
+};
+
+//- Per-slice values behind a Lee network, for reporting
+struct LeeSliceData
+{
+    double phiDeg;
+    LeeCorrelationValues correlations;
+    CompartmentSlice slice;
+};
+
+//- Slice parameters for N slices (Eqs 4.24-4.27 code forms, Eq 3.7-3.8,
+//  code line C_x = C_x_g maf_h sin(theta)/(L/N))
+std::vector<LeeSliceData> leeSliceData(const LeeDryer& dryer, int nSlices, const LeeParameters& p);
+
+//- The network of Lee's Dryer Model
+CompartmentNetwork leeNetwork(const LeeDryer& dryer, int nSlices, const LeeParameters& p);
+
+} // namespace drum
+
+#endif
