@@ -54,7 +54,7 @@ double UnloadingModel::holdup(double psiDeg) const
 
 double UnloadingModel::discharge(double psiDeg) const
 {
-    return -settings_.bulkDensity*flight_.areaSlope(psiDeg);  // F/omega = -dH/dpsi (§4.2.4)
+    return 0.0 - settings_.bulkDensity*flight_.areaSlope(psiDeg);  // F/omega = -dH/dpsi (§4.2.4)
 }
 
 
