@@ -1,0 +1,82 @@
+#include "drum/drift/driftModel.hpp"
+
+#include "drum/io/inputError.hpp"
+#include "particleDrag/loneParticleFall.hpp"
+#include "particleDrag/sheetVelocity.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace drum
+{
+
+namespace
+{
+void check(const DriftQuery& q)
+{
+    requirePositive(q.particleDiameter, "drift query particle diameter");
+    requirePositive(q.particleDensity, "drift query particle density");
+    if (!(q.gasVelocity >= 0) || !std::isfinite(q.gasVelocity))
+    {
+        throw InputError("", "drift query gas velocity", "must be in [0, inf) m/s (+x is the gas direction)");
+    }
+    if (!(q.fallHeight >= 0) || !std::isfinite(q.fallHeight))
+    {
+        throw InputError("", "drift query fall height", "must be in [0, inf) m");
+    }
+}
+} // namespace
+
+
+IsolatedParticleDrift::IsolatedParticleDrift(particleDrag::Gas gas, particleDrag::DragLaw law)
+:
+    gas_(gas),
+    law_(law)
+{
+    requirePositive(gas_.density, "gas density");
+    requirePositive(gas_.viscosity, "gas viscosity");
+}
+
+
+double IsolatedParticleDrift::displacement(const DriftQuery& q) const
+{
+    check(q);
+    const particleDrag::Particle p{q.particleDiameter, q.particleDensity};
+    // Sherritt 1991 Eqs 13/16/17 with t = sqrt(2y/g) (Eq 19), V = V_g
+    return particleDrag::loneParticleAdvance(law_, p, gas_, q.gasVelocity, q.fallHeight, q.incline);
+}
+
+
+double SherrittSheetDrift::displacement(const DriftQuery& q) const
+{
+    check(q);
+    // Eq 142 (code exponents 0.763/0.857/0.437, capped at 1): V_c = C_V V_g
+    const double cv = particleDrag::sherrittSheetVelocityRatio(q.fallHeight, q.spillRate, q.flightLength);
+    DriftQuery inSheet = q;
+    inSheet.gasVelocity = cv*q.gasVelocity;
+    return IsolatedParticleDrift::displacement(inSheet);
+}
+
+
+std::shared_ptr<const DriftModel> makeDriftModel
+(
+    const std::string& name,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law,
+    const std::string& entry
+)
+{
+    if (name == "isolated")
+    {
+        return std::make_shared<IsolatedParticleDrift>(gas, law);
+    }
+    if (name == "sherritt")
+    {
+        return std::make_shared<SherrittSheetDrift>(gas, law);
+    }
+    std::ostringstream os;
+    os << "unknown drift model '" << name << "': valid names are isolated, sherritt";
+    throw InputError("", entry, os.str());
+}
+
+} // namespace drum

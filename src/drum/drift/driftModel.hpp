@@ -1,0 +1,82 @@
+// Drift per fall: the axial displacement of a particle falling from a flight
+// through the gas, the delta_1 of Sherritt 1991 Eqs 45-51. The two-phase
+// model asks a DriftModel for it at every discharge angle and size class,
+// so the lone-particle law, Sherritt's sheet correction (Eq 142) or a CFD
+// drift table plug in here.
+//
+// Sign convention (Sherritt, digest 0): +x is the direction of the gas flow,
+// gasVelocity >= 0, incline > 0 when the drum slopes down along the gas.
+#ifndef DRUM_DRIFT_DRIFTMODEL_HPP
+#define DRUM_DRIFT_DRIFTMODEL_HPP
+
+#include "particleDrag/dragLaw.hpp"
+#include "particleDrag/gasProperties.hpp"
+
+#include <memory>
+#include <string>
+
+namespace drum
+{
+
+//- What a drift model is asked
+struct DriftQuery
+{
+    double particleDiameter = 0; //!< m (sieve size x sphericity)
+    double particleDensity = 0;  //!< kg/m3
+    double gasVelocity = 0;      //!< mean axial gas velocity V_g >= 0, m/s
+    double fallHeight = 0;       //!< y >= 0, m
+    double spillRate = 0;        //!< flight discharge rate per metre, kg/(s m) (Eq 40)
+    double flightLength = 0;     //!< axial length of the flight, m
+    double incline = 0;          //!< drum incline, rad, signed as above
+};
+
+class DriftModel
+{
+public:
+    virtual ~DriftModel() = default;
+
+    //- Axial displacement [m] along +x during the fall
+    virtual double displacement(const DriftQuery& q) const = 0;
+
+    //- Name used in dictionaries
+    virtual std::string name() const = 0;
+};
+
+//- Lone particle in the mean gas velocity, V = V_g (Sherritt 1991 Eqs 13,
+//  16, 17 with Eq 19; Kamke's and Kelly's model): particleDrag's
+//  loneParticleAdvance
+class IsolatedParticleDrift : public DriftModel
+{
+public:
+    IsolatedParticleDrift(particleDrag::Gas gas, particleDrag::DragLaw law = {});
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return "isolated"; }
+
+protected:
+    particleDrag::Gas gas_;
+    particleDrag::DragLaw law_;
+};
+
+//- Lone particle in the sheet gas velocity V_c = C_V V_g, C_V from Eq 142
+//  with the code's exponents and the cap at 1 (sheetgasvel())
+class SherrittSheetDrift : public IsolatedParticleDrift
+{
+public:
+    using IsolatedParticleDrift::IsolatedParticleDrift;
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return "sherritt"; }
+};
+
+//- "isolated" or "sherritt"; throws drum::InputError naming `entry` and the
+//  valid names otherwise
+std::shared_ptr<const DriftModel> makeDriftModel
+(
+    const std::string& name,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law = {},
+    const std::string& entry = "drift.model"
+);
+
+} // namespace drum
+
+#endif

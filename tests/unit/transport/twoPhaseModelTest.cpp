@@ -1,0 +1,228 @@
+// Sherritt 1991 two-phase model: analytic EAD results, mass balances,
+// closed forms of the digest, DRUM1 inversion, axial solve, bad input.
+#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/io/inputError.hpp"
+#include "drum/transport/twoPhaseModel.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+using namespace drum;
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+constexpr double deg = pi/180;
+
+// A flight with l = r on the whole discharging arc at phi: the table is
+// constant r from pi - phi to 2 pi - phi and 0 elsewhere (unit-radius EAD
+// hand checks of §5.2, at radius r)
+SherrittFlightProfile eadTable(double r, double phi, double Dex, int N, double L)
+{
+    const double e = 1e-9;
+    return SherrittFlightProfile({0, pi - phi - e, pi - phi, 2*pi - phi, 2*pi - phi + e, 2*pi},
+        {0, 0, r, r, 0, 0}, FlightSide::exterior, Dex, N, L);
+}
+
+TwoPhaseCase eadCase(double slope = 2*deg)
+{
+    TwoPhaseCase c;
+    c.name = "ead test";
+    c.drum = {0.305, 1.69, slope, 8.0/60, 0.0};
+    c.exterior = eadTable(0.05, 45.6*deg, 0.205, 8, 1.69);
+    c.material.particleDensity = 1147;
+    c.material.bulkDensity = 591;
+    c.material.repose = 45.6*deg;
+    c.material.sieveSizes = {1750e-6};
+    c.material.massFractions = {1.0};
+    return c;
+}
+
+TwoPhaseCase sheikhCase(double slope = 1*deg)
+{
+    TwoPhaseCase c;
+    c.name = "sheikh test";
+    c.drum = {0.385, 2.10, slope, 5.7/60, 0.0};
+    c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg);
+    c.material.particleDensity = 2650;
+    c.material.bulkDensity = 1517;
+    c.material.repose = 35.69*deg;
+    c.material.sieveSizes = {600e-6, 427e-6, 327e-6, 256e-6, 168e-6, 88e-6};
+    c.material.massFractions = {11.6, 21.6, 12.0, 29.6, 22.1, 3.2};
+    return c;
+}
+} // namespace
+
+TEST(TwoPhaseModel, EadDesignLoadedHoldupAndDenseFlowByHand)
+{
+    const auto c = eadCase();
+    const TwoPhaseModel m(c);
+    const auto s = m.atDischargeAngle(pi);
+    const double r = 0.05;
+    const int N = 8;
+    // Eq 122 at theta_i = pi with l = r: each double integral is r^2 pi^2/2
+    EXPECT_NEAR(s.dischargingHoldup, N*r*r*pi/8, 1e-6*N*r*r);
+    EXPECT_NEAR(s.nonDischargingHoldup, N*r*r*pi/8, 1e-6*N*r*r);
+    // Eq 86: N_ex,s = 1, c = r, J = pi r^3
+    const double n = 8.0/60;
+    const double a = 2*deg;
+    const double phi = 45.6*deg;
+    const double F2 = n*591*a/(6*std::sin(phi))*(pi*r*r*r + 2*N*pi*r*r*r);
+    EXPECT_NEAR(s.denseFlow, F2, 1e-6*F2);
+    // no gas: delta = y sin(alpha), Eq 48 by Simpson with Eq 92
+    const double Do = 0.305;
+    const double Dex = 0.205;
+    auto y = [&](double t) { return 0.5*Do*(std::sin(std::acos(Dex/Do*std::cos(t))) - Dex/Do*std::sin(t)); };
+    double I = 0;
+    double M = 0;
+    const int K = 20000;
+    for (int k = 0; k <= K; ++k)
+    {
+        const double t = pi + pi*k/K;
+        const double w = (k == 0 || k == K) ? 1 : (k % 2 ? 4 : 2);
+        I += w*r*r*y(t)*std::sin(a);
+        M += w*r*r*std::sqrt(2*y(t)/9.81);
+    }
+    I *= pi/K/3;
+    M *= pi/K/3;
+    EXPECT_NEAR(s.airborneCapacity[0], 0.5*n*591*N*I, 1e-5*0.5*n*591*N*I);
+    EXPECT_NEAR(s.airborneHoldup, 0.5*n*N*M, 1e-5*0.5*n*N*M);       // Eq 91 / rho_b
+    EXPECT_NEAR(s.feedRate, s.airborneCapacity[0] + F2, 1e-9);      // Eq 55, one size
+}
+
+TEST(TwoPhaseModel, OpenDrumHoldupMatchesDigestClosedForms)
+{
+    // digest 2.8 open-drum forms, from the flight-surface integrals
+    const auto c = sheikhCase();
+    const TwoPhaseModel m(c);
+    const SherrittFlightSurface s(*c.exterior, c.material.repose);
+    const double N = 12;
+    for (double ti : {70*deg, 120*deg, 180*deg, 230*deg, 290*deg})
+    {
+        const auto st = m.atDischargeAngle(ti);
+        double expect;
+        if (ti <= pi)  // Eq 122
+        {
+            expect = (ti*s.integralL2(0, 2*pi) - s.integralOfCumulativeL2(2*pi - ti, 2*pi)
+                      + s.iteratedDischarge(ti, 2*pi))/(4*pi);
+            // the first term: int_0^ti int_{2pi - t}^{2pi} l^2 = ti C(2pi) - int_{2pi-ti}^{2pi} C
+            expect = (ti*s.cumulativeL2(2*pi) - s.integralOfCumulativeL2(2*pi - ti, 2*pi)
+                      + s.iteratedDischarge(ti, 2*pi))/(4*pi);
+        }
+        else
+        {
+            const double tf = 2*pi - ti;
+            expect = (tf*s.cumulativeL2(2*pi) - s.integralOfCumulativeL2(2*pi - tf, 2*pi)
+                      + (ti - tf)*s.integralL2(ti, 2*pi) + s.iteratedDischarge(ti, 2*pi))/(4*pi);
+        }
+        EXPECT_NEAR(st.dischargingHoldup + st.nonDischargingHoldup, N*expect, 1e-5*N*expect) << ti/deg;
+    }
+}
+
+TEST(TwoPhaseModel, DesignLoadingIsAnInflectionOfTheDenseHoldup)
+{
+    // closed forms (digest 2.9): dH2/dtheta_i vanishes at pi from both sides
+    const TwoPhaseModel m(sheikhCase());
+    auto H2 = [&](double t) { const auto s = m.atDischargeAngle(t); return s.dischargingHoldup + s.nonDischargingHoldup; };
+    const double h = 2*deg;
+    const double slopeAtPi = (H2(pi + h) - H2(pi - h))/(2*h);
+    const double slopeBelow = (H2(pi - 20*deg + h) - H2(pi - 20*deg - h))/(2*h);
+    const double slopeAbove = (H2(pi + 20*deg + h) - H2(pi + 20*deg - h))/(2*h);
+    EXPECT_LT(slopeBelow, 0);
+    EXPECT_LT(slopeAbove, 0);
+    EXPECT_LT(std::abs(slopeAtPi), 0.1*std::min(std::abs(slopeBelow), std::abs(slopeAbove)));
+}
+
+TEST(TwoPhaseModel, SizeFractionsCloseAndInversionReproducesFeed)
+{
+    auto c = sheikhCase();
+    c.gas.massRate = 0.05;  // cocurrent air: sizes separate
+    const TwoPhaseModel m(c);
+    const auto s = m.atDischargeAngle(250*deg);
+    ASSERT_TRUE(s.valid) << s.note;
+    EXPECT_NEAR(std::accumulate(s.holdupFractions.begin(), s.holdupFractions.end(), 0.0), 1.0, 1e-12);  // Eq 54
+    // cocurrent gas carries fines faster: they are depleted in the drum
+    EXPECT_LT(s.holdupFractions.back()/0.032, s.holdupFractions.front()/0.116);
+    const auto roots = m.solveConstantHoldup(s.feedRate);
+    ASSERT_FALSE(roots.empty());
+    bool found = false;
+    for (const auto& r : roots)
+    {
+        EXPECT_NEAR(m.atDischargeAngle(r.dischargeAngle).feedRate, s.feedRate, 1e-6*s.feedRate);
+        found = found || std::abs(r.dischargeAngle - 250*deg) < 1e-4;
+        // Eq 138 and per-size Eq 140 average back to T
+        double Tbar = 0;
+        for (std::size_t i = 0; i < r.sizeResidenceTimes.size(); ++i)
+        {
+            Tbar += c.material.massFractions[i]/100.1*r.sizeResidenceTimes[i];
+        }
+        EXPECT_NEAR(Tbar, r.meanResidenceTime, 1e-6*r.meanResidenceTime);
+    }
+    EXPECT_TRUE(found);
+}
+
+TEST(TwoPhaseModel, AxialSolveRelaxesToConstantHoldupInALongInclinedDrum)
+{
+    auto c = sheikhCase(3*deg);
+    c.drum.length = 30.0;  // long: the bed slope relaxes to the drum slope
+    c.options.axialSteps = 300;  // explicit RK4: 120 steps is unstable here (stiff relaxation)
+    const TwoPhaseModel m(c);
+    const double F0 = 0.015;
+    const auto drum1 = m.solveConstantHoldup(F0).front();
+    const auto drum3 = m.solveAxial(F0);
+    EXPECT_NEAR(drum3.profile.back().holdup*c.material.bulkDensity*c.drum.length, drum1.holdup_kg, 0.01*drum1.holdup_kg);
+    EXPECT_NEAR(drum3.profile.back().bedSlope, 0.0, 1e-3);
+}
+
+TEST(TwoPhaseModel, HorizontalDrumIntegratesThroughDesignLoading)
+{
+    auto c = sheikhCase(0.0);
+    c.options.axialSteps = 60;
+    const TwoPhaseModel m(c);
+    const auto r = m.solveAxial(0.01);
+    // the holdup rises from the discharge end and passes theta_i = pi
+    EXPECT_GT(r.profile.front().dischargeAngle, pi);
+    EXPECT_LT(r.profile.back().dischargeAngle, pi);
+    for (std::size_t k = 1; k < r.profile.size(); ++k)
+    {
+        EXPECT_GE(r.profile[k].holdup, r.profile[k - 1].holdup - 1e-12);
+        EXPECT_NEAR(r.profile[k].airborneFlow + r.profile[k].denseFlow, 0.01, 1e-9);
+    }
+    // step doubling changes the answer by ~1%: the gamma cap at phi makes
+    // the right-hand side non-smooth, so RK4 converges at low order there
+    c.options.axialSteps = 120;
+    const auto r2 = TwoPhaseModel(c).solveAxial(0.01);
+    EXPECT_NEAR(r.meanResidenceTime, r2.meanResidenceTime, 0.03*r2.meanResidenceTime);
+    // horizontal: no DRUM1 flow without gas and without bed slope
+    EXPECT_THROW(m.solveConstantHoldup(0.01), InputError);
+}
+
+TEST(TwoPhaseModel, RefusesBadInput)
+{
+    auto msg = [](auto f) {
+        try { f(); } catch (const InputError& e) { return std::string(e.what()); }
+        return std::string("no error");
+    };
+    const TwoPhaseModel m(sheikhCase());
+    EXPECT_NE(msg([&] { m.solveConstantHoldup(0.0); }).find("feedRate"), std::string::npos);
+    EXPECT_THROW(m.solveConstantHoldup(-1), InputError);
+    const std::string big = msg([&] { m.solveConstantHoldup(10.0); });
+    EXPECT_NE(big.find("beyond what the drum can carry"), std::string::npos) << big;
+    auto c = sheikhCase();
+    c.drum.slope = 30*deg;
+    EXPECT_NE(msg([&] { TwoPhaseModel{c}; }).find("drum.slope"), std::string::npos);
+    c = sheikhCase();
+    c.drum.speed = 0;
+    EXPECT_NE(msg([&] { TwoPhaseModel{c}; }).find("drum.speed"), std::string::npos);
+    c = sheikhCase();
+    c.drum.shellDiameter = 0.3;  // tips outside
+    EXPECT_NE(msg([&] { TwoPhaseModel{c}; }).find("tipDiameter"), std::string::npos);
+    c = sheikhCase();
+    c.material.repose = 95*deg;
+    EXPECT_NE(msg([&] { TwoPhaseModel{c}; }).find("(0, 90)"), std::string::npos);
+    c = sheikhCase();
+    c.material.massFractions.pop_back();
+    EXPECT_THROW(TwoPhaseModel{c}, InputError);
+}
