@@ -138,7 +138,15 @@ FallResult integrateFall
     {
         throw std::invalid_argument("integrateFall: steps must be >= 1");
     }
-    const double tFree = fallTime(height);
+    if (!(options.releaseVelocity >= 0.0))
+    {
+        throw std::invalid_argument("integrateFall: releaseVelocity must be >= 0");
+    }
+    const double w0 = options.releaseVelocity;
+    // Drag-free fall time from height = w0 t + g t^2/2 (Eq 19 when w0 = 0)
+    const double tFree = w0 > 0.0
+        ? (std::sqrt(w0*w0 + 2.0*gravity*height) - w0)/gravity
+        : fallTime(height);
     FallResult result;
     if (height == 0.0)
     {
@@ -183,7 +191,7 @@ FallResult integrateFall
     };
 
     const double h = tFree/options.steps;
-    State s{0, 0, 0, 0};
+    State s{0, 0, 0, w0};
     double t = 0;
 
     if (!options.verticalDrag)

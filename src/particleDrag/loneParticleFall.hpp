@@ -64,6 +64,10 @@ struct FallIntegration
 
     //- Number of RK4 steps over the fall
     int steps = 4000;
+
+    //- Downward speed at release [m/s], >= 0 (a curtain leaves its slot
+    //  at the release velocity, not at rest); 0 is Sherritt's start
+    double releaseVelocity = 0.0;
 };
 
 //- Result of a numerical fall

@@ -1,0 +1,129 @@
+/*---------------------------------------------------------------------------*\
+  flightedDryer: curtainFoam
+-------------------------------------------------------------------------------
+Application
+    curtainFoam
+
+Group
+    grpMultiphaseSolvers
+
+Description
+    Falling curtains of solids in a gas: incompressible, isothermal gas with
+    RANS turbulence (any PhaseIncompressible model: kEpsilon, realizableKE,
+    kOmegaSST, laminar) and one or more dispersed particle size classes,
+    each with its own continuity and momentum, coupled by interphase drag
+    from the particleDragModel family (libcurtainModels). Gravity acts on
+    the solids; the gas pressure is p_rgh = p - rho_g g.h.
+
+    Physics for dilute curtains (solids fraction mostly below 1e-2; Lee
+    2008 section 6.4: no kinetic theory, no particle pressure): the
+    particle phases are pressureless; their momentum is written per unit
+    particle volume so it stays well posed where alpha -> 0; drag is
+    implicit in both phases through a partial elimination; the slot region
+    (alpha ~ 0.1-0.2) is guarded by alphaMax.
+
+    Time stepping: transient (Euler ddt, maxCo adjustable step) or, with
+    ddtSchemes { default localEuler; }, a pseudo-transient march to the
+    steady state with local time steps (PIMPLE maxCo, maxCoParticles).
+
+    Stops with the cause and the last good time when a solids fraction
+    leaves [0, 1] or a field turns NaN.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "singlePhaseTransportModel.H"
+#include "PhaseIncompressibleTurbulenceModel.H"
+#include "pimpleControl.H"
+#include "localEulerDdtScheme.H"
+#include "fvcSmooth.H"
+#include "constrainPressure.H"
+#include "constrainHbyA.H"
+#include "particleClass.H"
+
+#include <cmath>
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Falling curtains: incompressible gas (RANS) and one or more"
+        " pressureless particle size classes with implicit drag;"
+        " transient or local-time-stepping to the steady state."
+    );
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createControl.H"
+    #include "createTimeControls.H"
+    #include "createRDeltaT.H"
+    #include "createFields.H"
+
+    turbulence->validate();
+
+    if (!LTS)
+    {
+        #include "CourantNo.H"
+        #include "setInitialDeltaT.H"
+    }
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+
+        if (LTS)
+        {
+            #include "setRDeltaT.H"
+        }
+        else
+        {
+            #include "CourantNo.H"
+            #include "setDeltaT.H"
+        }
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        while (pimple.loop())
+        {
+            #include "alphaEqns.H"
+            #include "UEqns.H"
+
+            while (pimple.correct())
+            {
+                #include "pEqn.H"
+            }
+
+            #include "UpEqns.H"
+
+            if (pimple.turbCorr())
+            {
+                turbulence->correct();
+            }
+        }
+
+        #include "checkFields.H"
+
+        runTime.write();
+        if (runTime.writeTime())
+        {
+            lastGoodTime = runTime.timeName();
+        }
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,376 @@
+/*---------------------------------------------------------------------------*\
+  flightedDryer: OpenFOAM library for falling curtains in flighted dryers
+\*---------------------------------------------------------------------------*/
+
+#include "curtainDrift.H"
+#include "addToRunTimeSelectionTable.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+#include "uniformDimensionedFields.H"
+#include "gravityMeshObject.H"
+#include "processorPolyPatch.H"
+#include "emptyPolyPatch.H"
+
+#include "particleDrag/loneParticleFall.hpp"
+
+#include <stdexcept>
+#include <limits>
+
+namespace
+{
+    const Foam::scalar NaN = std::numeric_limits<Foam::scalar>::quiet_NaN();
+}
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace functionObjects
+{
+    defineTypeNameAndDebug(curtainDrift, 0);
+    addToRunTimeSelectionTable(functionObject, curtainDrift, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::vector Foam::functionObjects::curtainDrift::up() const
+{
+    const uniformDimensionedVectorField& g = meshObjects::gravity::New(time_);
+    if (mag(g.value()) < SMALL)
+    {
+        FatalErrorInFunction
+            << type() << ' ' << name() << ": gravity is zero; the floor "
+            << "height has no direction" << exit(FatalError);
+    }
+    return -g.value()/mag(g.value());
+}
+
+
+void Foam::functionObjects::curtainDrift::selectFloorFaces()
+{
+    const vector u(up());
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const surfaceVectorField& Cf = mesh_.Cf();
+
+    DynamicList<label> iF;
+    DynamicList<scalar> iS;
+    for (label facei = 0; facei < mesh_.nInternalFaces(); ++facei)
+    {
+        const scalar nu = (Sf[facei] & u)/magSf[facei];
+        if (mag(nu) > 0.999 && mag((Cf[facei] & u) - floorHeight_) < tolerance_)
+        {
+            iF.append(facei);
+            iS.append(-sign(nu));
+        }
+    }
+
+    DynamicList<labelPair> bF;
+    DynamicList<scalar> bS;
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        const polyPatch& pp = pbm[patchi];
+        if (isA<emptyPolyPatch>(pp))
+        {
+            continue;
+        }
+        if (pp.coupled())
+        {
+            if (!isA<processorPolyPatch>(pp))
+            {
+                continue;
+            }
+            if (!refCast<const processorPolyPatch>(pp).owner())
+            {
+                continue;
+            }
+        }
+        const vectorField& pSf = Sf.boundaryField()[patchi];
+        const scalarField& pMagSf = magSf.boundaryField()[patchi];
+        const vectorField& pCf = Cf.boundaryField()[patchi];
+        forAll(pSf, facei)
+        {
+            const scalar nu = (pSf[facei] & u)/pMagSf[facei];
+            if (mag(nu) > 0.999 && mag((pCf[facei] & u) - floorHeight_) < tolerance_)
+            {
+                bF.append(labelPair(patchi, facei));
+                bS.append(-sign(nu));
+            }
+        }
+    }
+
+    internalFaces_.transfer(iF);
+    internalSign_.transfer(iS);
+    boundaryFaces_.transfer(bF);
+    boundarySign_.transfer(bS);
+
+    const label n = returnReduce
+    (
+        internalFaces_.size() + boundaryFaces_.size(),
+        sumOp<label>()
+    );
+    if (n == 0)
+    {
+        FatalErrorInFunction
+            << type() << ' ' << name() << ": no mesh face normal to gravity "
+            << "at floorHeight " << floorHeight_ << " m (tolerance "
+            << tolerance_ << " m)" << exit(FatalError);
+    }
+    Info<< type() << ' ' << name() << ": " << n << " floor faces at height "
+        << floorHeight_ << " m" << endl;
+}
+
+
+void Foam::functionObjects::curtainDrift::writeFileHeader(Ostream& os)
+{
+    writeHeader(os, "Curtain drift along the gas flow at the floor plane");
+    writeHeaderValue(os, "floorHeight", floorHeight_);
+    writeHeaderValue(os, "flowDirection", flowDir_);
+    writeHeaderValue(os, "releasePatch", releasePatch_);
+    writeCommented(os, "Time");
+    forAll(solids_->names(), i)
+    {
+        const word& c = solids_->names()[i];
+        writeTabbed(os, "drift_" + c);
+        writeTabbed(os, "captured_" + c);
+        if (lone_)
+        {
+            writeTabbed(os, "loneDrift_" + c);
+        }
+    }
+    writeTabbed(os, "drift_bulk");
+    writeTabbed(os, "captured_bulk");
+    os  << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::curtainDrift::curtainDrift
+(
+    const word& name,
+    const Time& runTime,
+    const dictionary& dict
+)
+:
+    fvMeshFunctionObject(name, runTime, dict),
+    writeFile(mesh_, name, typeName, dict),
+    floorHeight_(0),
+    flowDir_(1, 0, 0),
+    tolerance_(1e-4),
+    lone_(false),
+    loneGasVelocity_(0)
+{
+    read(dict);
+    writeFileHeader(file());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
+{
+    fvMeshFunctionObject::read(dict);
+    writeFile::read(dict);
+
+    solids_.reset(new curtainSolids(mesh_));
+    drag_.clear();
+    drag_.setSize(solids_->size());
+    forAll(drag_, i)
+    {
+        drag_.set(i, particleDragModel::New(solids_->drag(i)));
+    }
+
+    releasePatch_ = dict.get<word>("releasePatch");
+    if (mesh_.boundaryMesh().findPatchID(releasePatch_) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << type() << ' ' << name() << ": releasePatch '" << releasePatch_
+            << "' is not a patch of the mesh " << mesh_.boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+    floorHeight_ = dict.get<scalar>("floorHeight");
+    flowDir_ = dict.get<vector>("flowDirection");
+    if (mag(flowDir_) < SMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'flowDirection' is a zero vector" << exit(FatalIOError);
+    }
+    flowDir_ /= mag(flowDir_);
+    tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-4);
+
+    lone_ = dict.isDict("loneParticle");
+    if (lone_)
+    {
+        loneGasVelocity_ = dict.subDict("loneParticle").get<scalar>("gasVelocity");
+        if (!(loneGasVelocity_ >= 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "loneParticle: entry 'gasVelocity' = " << loneGasVelocity_
+                << " outside the allowed range [0 inf) m/s"
+                << exit(FatalIOError);
+        }
+    }
+
+    selectFloorFaces();
+
+    return true;
+}
+
+
+bool Foam::functionObjects::curtainDrift::execute()
+{
+    return true;
+}
+
+
+bool Foam::functionObjects::curtainDrift::write()
+{
+    const vector u(up());
+    const label slotID = mesh_.boundaryMesh().findPatchID(releasePatch_);
+    const vectorField& slotCf = mesh_.Cf().boundaryField()[slotID];
+    const surfaceVectorField& Cf = mesh_.Cf();
+
+    const label n = solids_->size();
+    scalarList drift(n, Zero), captured(n, Zero), loneDrift(n, Zero);
+    scalar bulkFloor = 0, bulkFloorX = 0, bulkIn = 0, bulkInX = 0;
+
+    forAll(solids_->names(), i)
+    {
+        const word& c = solids_->names()[i];
+        const scalar rhop = solids_->rho(i);
+        const surfaceScalarField& alphaPhi =
+            lookupObject<surfaceScalarField>(IOobject::groupName("alphaPhi", c));
+        const volVectorField& Up =
+            lookupObject<volVectorField>(IOobject::groupName("U", c));
+
+        // Floor plane
+        scalar m = 0, mx = 0;
+        forAll(internalFaces_, k)
+        {
+            const label f = internalFaces_[k];
+            const scalar md = rhop*alphaPhi[f]*internalSign_[k];
+            m += md;
+            mx += md*(Cf[f] & flowDir_);
+        }
+        forAll(boundaryFaces_, k)
+        {
+            const label patchi = boundaryFaces_[k].first();
+            const label f = boundaryFaces_[k].second();
+            const scalar md =
+                rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k];
+            m += md;
+            mx += md*(Cf.boundaryField()[patchi][f] & flowDir_);
+        }
+
+        // Release slot: inflow is a negative flux
+        const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
+        const vectorField& slotU = Up.boundaryField()[slotID];
+        scalar mIn = 0, mInX = 0, mInH = 0, mInW = 0;
+        forAll(slotPhi, f)
+        {
+            const scalar md = -rhop*slotPhi[f];
+            mIn += md;
+            mInX += md*(slotCf[f] & flowDir_);
+            mInH += md*(slotCf[f] & u);
+            mInW += md*(-(slotU[f] & u));
+        }
+
+        reduce(m, sumOp<scalar>());
+        reduce(mx, sumOp<scalar>());
+        reduce(mIn, sumOp<scalar>());
+        reduce(mInX, sumOp<scalar>());
+        reduce(mInH, sumOp<scalar>());
+        reduce(mInW, sumOp<scalar>());
+
+        if (mIn <= 0)
+        {
+            WarningInFunction
+                << type() << ' ' << name() << ": no inflow of " << c
+                << " through " << releasePatch_ << endl;
+            drift[i] = NaN;
+            captured[i] = 0;
+            loneDrift[i] = NaN;
+            continue;
+        }
+
+        const scalar xRel = mInX/mIn;
+        drift[i] = m > VSMALL ? mx/m - xRel : NaN;
+        captured[i] = m/mIn;
+        bulkFloor += m;
+        bulkFloorX += mx;
+        bulkIn += mIn;
+        bulkInX += mInX;
+
+        if (lone_)
+        {
+            const scalar H = mInH/mIn - floorHeight_;
+            particleDrag::Particle p;
+            p.diameter = solids_->d(i);
+            p.density = rhop;
+            particleDrag::Gas gas;
+            gas.density = solids_->rhoGas();
+            gas.viscosity = solids_->muGas();
+            particleDrag::FallIntegration opts;
+            opts.constantK = false;
+            opts.verticalDrag = true;
+            opts.releaseVelocity = max(mInW/mIn, scalar(0));
+            try
+            {
+                loneDrift[i] = particleDrag::integrateFall
+                (
+                    drag_[i].law(), p, gas, loneGasVelocity_, H, 0, opts
+                ).advance;
+            }
+            catch (const std::exception& e)
+            {
+                FatalErrorInFunction
+                    << type() << ' ' << name() << ": lone particle of class "
+                    << c << ": " << e.what() << exit(FatalError);
+            }
+        }
+    }
+
+    const scalar bulkDrift =
+        (bulkFloor > VSMALL && bulkIn > VSMALL)
+      ? bulkFloorX/bulkFloor - bulkInX/bulkIn
+      : NaN;
+    const scalar bulkCaptured = bulkIn > VSMALL ? bulkFloor/bulkIn : 0;
+
+    Info<< type() << ' ' << name() << " write:" << nl;
+    forAll(solids_->names(), i)
+    {
+        Info<< "    " << solids_->names()[i] << ": drift " << drift[i]
+            << " m, captured " << captured[i];
+        if (lone_)
+        {
+            Info<< ", lone particle " << loneDrift[i] << " m";
+        }
+        Info<< nl;
+    }
+    Info<< "    bulk: drift " << bulkDrift << " m, captured " << bulkCaptured
+        << nl << endl;
+
+    if (Pstream::master())
+    {
+        OFstream& os = file();
+        writeCurrentTime(os);
+        forAll(drift, i)
+        {
+            os  << tab << drift[i] << tab << captured[i];
+            if (lone_)
+            {
+                os  << tab << loneDrift[i];
+            }
+        }
+        os  << tab << bulkDrift << tab << bulkCaptured << endl;
+    }
+
+    return true;
+}
+
+
+// ************************************************************************* //
