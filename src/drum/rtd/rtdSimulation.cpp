@@ -327,6 +327,60 @@ std::vector<double> exactRtdAt
 {
     const Eigen::Index n = sys.size();
     const Eigen::MatrixXd K(sys.K);
+
+    // Response inside the pulse: integrate from 0 with input 1/T
+    auto insidePulse = [&](double t)
+    {
+        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
+        M.topLeftCorner(n, n) = K*t;
+        M.topRightCorner(n, 1) = sys.b*(t/T);
+        return Vec(M.exp().topRightCorner(n, 1));
+    };
+
+    // State at the end of the pulse (or the impulse at t = 0)
+    const Vec yT = T > 0 ? insidePulse(T) : Vec(sys.b);
+
+    // Samples after the pulse: intervals between them are usually multiples
+    // of a common step (a logger's clock), so one propagator exp(K g) and
+    // matrix-vector products replace one matrix exponential per interval
+    std::vector<double> after;
+    for (const double t : times)
+    {
+        if (t >= T) after.push_back(t);
+    }
+    for (std::size_t j = 1; j < after.size(); ++j)
+    {
+        if (after[j] < after[j - 1])
+        {
+            throw InputError("", "RTD sample times", "times must be ascending");
+        }
+    }
+    auto fgcd = [](double x, double y)
+    {
+        const double tol = 1e-6*std::max(1.0, std::max(x, y));
+        while (y > tol)
+        {
+            double r = std::fmod(x, y);
+            if (y - r < tol) r = 0;
+            x = y;
+            y = r;
+        }
+        return x;
+    };
+    double g = 0;
+    for (std::size_t j = 1; j < after.size(); ++j)
+    {
+        const double d = after[j] - after[j - 1];
+        if (d > 1e-9) g = g == 0 ? d : fgcd(std::max(g, d), std::min(g, d));
+    }
+    for (std::size_t j = 1; j < after.size() && g > 0; ++j)
+    {
+        const double k = (after[j] - after[j - 1])/g;
+        if (std::abs(k - std::round(k)) > 1e-6) g = 0;
+    }
+    const double span = after.empty() ? 0.0 : after.back() - after.front();
+    const bool stepping = g > 0 && span/g < 200.0*after.size() + 2000.0;
+
     std::map<double, Eigen::MatrixXd> cache;
     auto phi = [&](double dt) -> const Eigen::MatrixXd&
     {
@@ -337,24 +391,12 @@ std::vector<double> exactRtdAt
         }
         return it->second;
     };
-    // State at the end of the pulse (or the impulse at t = 0)
-    Vec yT;
-    if (T > 0)
-    {
-        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-        M.topLeftCorner(n, n) = K*T;
-        M.topRightCorner(n, 1) = sys.b;     // u T = 1
-        yT = M.exp().topRightCorner(n, 1);
-    }
-    else
-    {
-        yT = sys.b;
-    }
 
     std::vector<double> E;
     E.reserve(times.size());
     double tPrev = T;
     Vec y = yT;
+    bool first = true;
     for (const double t : times)
     {
         if (t < 0)
@@ -364,22 +406,25 @@ std::vector<double> exactRtdAt
         }
         if (t < T)
         {
-            // Inside the pulse: integrate from 0 with input 1/T
-            Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-            M.topLeftCorner(n, n) = K*t;
-            M.topRightCorner(n, 1) = sys.b*(t/T);
-            E.push_back(sys.c.dot(Vec(M.exp().topRightCorner(n, 1))));
+            E.push_back(sys.c.dot(insidePulse(t)));
             continue;
         }
-        if (t < tPrev)
+        const double dt = t - tPrev;
+        if (dt > 0)
         {
-            throw InputError("", "RTD sample times", "times must be ascending");
+            if (stepping && !first)
+            {
+                const long k = std::lround(dt/g);
+                const Eigen::MatrixXd& P = phi(g);
+                for (long s = 0; s < k; ++s) y = P*y;
+            }
+            else
+            {
+                y = phi(dt)*y;
+            }
         }
-        if (t > tPrev)
-        {
-            y = phi(t - tPrev)*y;
-            tPrev = t;
-        }
+        first = false;
+        tPrev = t;
         E.push_back(sys.c.dot(y));
     }
     return E;
