@@ -1,0 +1,278 @@
+#include "drumDict.hpp"
+
+#include "drum/io/inputError.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+namespace drumSolver
+{
+
+namespace
+{
+
+using drum::InputError;
+
+struct Reader
+{
+    std::string file;
+
+    YAML::Node section(const YAML::Node& root, const std::string& name, bool required = true) const
+    {
+        const YAML::Node n = root[name];
+        if (!n && required)
+        {
+            throw InputError(file, name, "missing section");
+        }
+        if (n && !n.IsMap())
+        {
+            throw InputError(file, name, "must be a dictionary of entries");
+        }
+        return n;
+    }
+
+    double number(const YAML::Node& sec, const std::string& secName, const std::string& key,
+                  double lo, double hi, std::optional<double> dflt = {}, bool openLo = false) const
+    {
+        const std::string entry = secName + "." + key;
+        const YAML::Node n = sec[key];
+        if (!n)
+        {
+            if (dflt) return *dflt;
+            throw InputError(file, entry, "missing; allowed range " + range(lo, hi, openLo));
+        }
+        double v;
+        try
+        {
+            v = n.as<double>();
+        }
+        catch (const YAML::Exception&)
+        {
+            throw InputError(file, entry, "not a number; allowed range " + range(lo, hi, openLo));
+        }
+        if (!std::isfinite(v) || v < lo || v > hi || (openLo && v == lo))
+        {
+            std::ostringstream os;
+            os << "value " << v << " outside the allowed range " << range(lo, hi, openLo);
+            throw InputError(file, entry, os.str());
+        }
+        return v;
+    }
+
+    std::string word(const YAML::Node& sec, const std::string& secName, const std::string& key,
+                     const std::vector<std::string>& allowed, std::optional<std::string> dflt = {}) const
+    {
+        const std::string entry = secName + "." + key;
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        const YAML::Node n = sec[key];
+        if (!n)
+        {
+            if (dflt) return *dflt;
+            throw InputError(file, entry, "missing; allowed: " + list);
+        }
+        const std::string v = n.as<std::string>();
+        for (const auto& a : allowed)
+        {
+            if (v == a) return v;
+        }
+        throw InputError(file, entry, "unknown value '" + v + "'; allowed: " + list);
+    }
+
+    static std::string range(double lo, double hi, bool openLo)
+    {
+        std::ostringstream os;
+        os << (openLo ? "(" : "[") << lo << ", " << hi << "]";
+        return os.str();
+    }
+};
+
+std::filesystem::path expandPath(const std::string& raw, const std::filesystem::path& caseDir)
+{
+    std::string s = raw;
+    // $VAR or ${VAR} at the start
+    if (!s.empty() && s[0] == '$')
+    {
+        std::size_t end;
+        std::string var;
+        if (s.size() > 1 && s[1] == '{')
+        {
+            end = s.find('}');
+            var = s.substr(2, end - 2);
+            ++end;
+        }
+        else
+        {
+            end = s.find('/');
+            var = s.substr(1, end == std::string::npos ? std::string::npos : end - 1);
+        }
+        const char* val = std::getenv(var.c_str());
+        s = std::string(val ? val : "") + (end == std::string::npos ? "" : s.substr(end));
+    }
+    std::filesystem::path p(s);
+    return p.is_absolute() ? p : caseDir/p;
+}
+
+} // namespace
+
+
+DrumDict readDrumDict(const std::filesystem::path& caseDir)
+{
+    DrumDict d;
+    d.path = caseDir/"drumDict";
+    const Reader r{d.path.string()};
+    if (!std::filesystem::exists(d.path))
+    {
+        throw InputError(r.file, "", "case dictionary not found");
+    }
+    YAML::Node root;
+    try
+    {
+        root = YAML::LoadFile(d.path.string());
+    }
+    catch (const YAML::Exception& e)
+    {
+        throw InputError(r.file, "", std::string("YAML syntax: ") + e.what());
+    }
+    const double big = 1e300;
+
+    const YAML::Node drum = r.section(root, "drum");
+    d.length = r.number(drum, "drum", "length", 0, 500, {}, true);
+    d.diameter = r.number(drum, "drum", "diameter", 0, 20, {}, true);
+    d.slopeDeg = r.number(drum, "drum", "slope_deg", 0, 20);
+    d.speedRpm = r.number(drum, "drum", "speed_rpm", 0, 60, {}, true);
+
+    const YAML::Node fl = r.section(root, "flights");
+    d.flightCount = int(r.number(fl, "flights", "count", 2, 200));
+    d.baseLength = r.number(fl, "flights", "baseLength", 0, d.diameter/2, {}, true);
+    d.tipLength = r.number(fl, "flights", "tipLength", 0, d.diameter/2, 0.0);
+    d.baseAngleDeg = r.number(fl, "flights", "baseAngle_deg", 30, 150, 90.0);
+    d.tipAngleDeg = r.number(fl, "flights", "tipAngle_deg", 60, 180, 90.0);
+
+    const YAML::Node m = r.section(root, "material");
+    d.feedRate = r.number(m, "material", "feedRate", 0, 1e4, {}, true);
+    d.bulkDensity = r.number(m, "material", "bulkDensity", 0, 2e4, {}, true);
+    d.particleDensity = r.number(m, "material", "particleDensity", d.bulkDensity, 2e4);
+    d.sphericity = r.number(m, "material", "sphericity", 0, 1, 1.0, true);
+    if (m["repose_deg"])
+    {
+        d.reposeDeg = r.number(m, "material", "repose_deg", 0, 90, {}, true);
+    }
+    if (m["moisture"])
+    {
+        const YAML::Node w = m["moisture"];
+        d.moisture = std::make_pair(r.number(w, "material.moisture", "inlet", 0, 1, {}, true),
+                                    r.number(w, "material.moisture", "outlet", 0, 1, {}, true));
+    }
+    if (!d.reposeDeg && !d.moisture)
+    {
+        throw InputError(r.file, "material.repose_deg", "give repose_deg (deg, (0, 90]) or material.moisture {inlet, outlet}");
+    }
+    const YAML::Node sz = m["sizes_um"], fr = m["fractions_pct"];
+    if (!sz || !sz.IsSequence() || sz.size() == 0)
+    {
+        throw InputError(r.file, "material.sizes_um", "missing: a list of sieve sizes in um, each in (0, 1e5]");
+    }
+    if (!fr || !fr.IsSequence() || fr.size() != sz.size())
+    {
+        throw InputError(r.file, "material.fractions_pct", "needs one mass percentage (>= 0) per size in sizes_um");
+    }
+    double sum = 0;
+    for (std::size_t i = 0; i < sz.size(); ++i)
+    {
+        const double s = sz[i].as<double>(), f = fr[i].as<double>();
+        if (!(s > 0 && s <= 1e5)) throw InputError(r.file, "material.sizes_um[" + std::to_string(i) + "]", "outside (0, 1e5] um");
+        if (!(f >= 0)) throw InputError(r.file, "material.fractions_pct[" + std::to_string(i) + "]", "must be >= 0");
+        d.sizes.push_back(s*1e-6);
+        d.fractions.push_back(f);
+        sum += f;
+    }
+    if (!(sum > 0)) throw InputError(r.file, "material.fractions_pct", "must not all be zero");
+    for (double& f : d.fractions) f /= sum;
+
+    const YAML::Node gas = r.section(root, "gas", false);
+    const YAML::Node g = gas ? gas : YAML::Node(YAML::NodeType::Map);
+    d.counterCurrent = r.word(g, "gas", "flow", {"coCurrent", "counterCurrent"}, std::string("counterCurrent")) == "counterCurrent";
+    d.gasMassRate = r.number(g, "gas", "massRate", 0, 1e4, 0.0);
+    d.gasTemperatureC = r.number(g, "gas", "temperature_C", -50, 1500, 20.0);
+
+    const YAML::Node mo = r.section(root, "model");
+    d.model = r.word(mo, "model", "type", {"compartment", "twoPhase"});
+    d.slices = int(r.number(mo, "model", "slices", 1, 1000, 30.0));
+    d.partition = r.word(mo, "model", "partition", {"leeCorrelations"}, std::string("leeCorrelations"));
+    d.kilnTime = r.number(mo, "model", "kilnTime", 0, big, 9.28, true);
+    d.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);
+    d.dragFactor = r.number(mo, "model", "forwardDragFactor", 0, 100, 1.0);
+    d.designLoadMultiplier = r.number(mo, "model", "designLoadMultiplier", 0, 100, 1.0, true);
+    d.drift = r.word(mo, "model", "drift", {"isolated", "sherritt"}, std::string("sherritt"));
+
+    const YAML::Node rt = r.section(root, "rtd", false);
+    const YAML::Node rr = rt ? rt : YAML::Node(YAML::NodeType::Map);
+    d.rtd.integrator = drum::parseRtdIntegrator(
+        r.word(rr, "rtd", "integrator", {"exact", "trbdf2", "backwardEuler", "forwardEuler"}, std::string("exact")),
+        "rtd.integrator", r.file);
+    d.rtd.timeStep = r.number(rr, "rtd", "timeStep", 0, 1e5, 5.0, true);
+    d.rtd.recovery = r.number(rr, "rtd", "recovery", 0.5, 0.999999, 0.999);
+    d.rtd.pulseDuration = r.number(rr, "rtd", "pulseDuration", 0, 1e5, 0.0);
+    d.rtd.onUnstable = r.word(rr, "rtd", "onUnstable", {"error", "fallback"}, std::string("error")) == "fallback"
+        ? drum::UnstableStepPolicy::fallback : drum::UnstableStepPolicy::error;
+    if (rr["tracer"])
+    {
+        const YAML::Node t = rr["tracer"];
+        if (!t["file"])
+        {
+            throw InputError(r.file, "rtd.tracer.file", "missing: path of the measured tracer CSV");
+        }
+        TracerFile tf;
+        tf.file = expandPath(t["file"].as<std::string>(), caseDir);
+        if (!std::filesystem::exists(tf.file))
+        {
+            throw InputError(r.file, "rtd.tracer.file", "tracer file not found: " + tf.file.string());
+        }
+        tf.timeColumn = t["timeColumn"] ? t["timeColumn"].as<std::string>() : "time_s";
+        const std::string tu = r.word(t, "rtd.tracer", "timeUnit", {"s", "min", "h"}, std::string("s"));
+        tf.timeScale = tu == "s" ? 1.0 : tu == "min" ? 60.0 : 3600.0;
+        tf.eColumn = t["EColumn"] ? t["EColumn"].as<std::string>() : "E_per_s";
+        const std::string eu = r.word(t, "rtd.tracer", "EUnit", {"per_s", "per_min", "per_h"}, std::string("per_s"));
+        tf.eScale = eu == "per_s" ? 1.0 : eu == "per_min" ? 1.0/60.0 : 1.0/3600.0;
+        d.tracer = tf;
+    }
+
+    d.starts = 1;
+    if (root["estimation"])
+    {
+        const YAML::Node e = root["estimation"];
+        if (!d.tracer)
+        {
+            throw InputError(r.file, "estimation", "needs a measured curve: rtd.tracer");
+        }
+        if (d.model != "compartment")
+        {
+            throw InputError(r.file, "estimation", "only for model.type compartment");
+        }
+        const YAML::Node ps = e["parameters"];
+        if (!ps || !ps.IsSequence() || ps.size() == 0)
+        {
+            throw InputError(r.file, "estimation.parameters",
+                "a list from: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier");
+        }
+        for (const auto& p : ps)
+        {
+            std::string n = p.as<std::string>();
+            if (n == "forwardDragFactor") n = "dragFactor";
+            if (n != "kilnTime" && n != "backFraction" && n != "dragFactor" && n != "forwardShare" && n != "designLoadMultiplier")
+            {
+                throw InputError(r.file, "estimation.parameters", "unknown parameter '" + n
+                    + "'; allowed: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier");
+            }
+            d.estimate.push_back(n);
+        }
+        d.starts = int(r.number(e, "estimation", "starts", 1, 100, 4.0));
+    }
+    return d;
+}
+
+} // namespace drumSolver

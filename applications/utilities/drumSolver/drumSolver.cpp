@@ -1,0 +1,436 @@
+// drumSolver -case DIR: solids transport through a flighted rotary drum from
+// the case dictionary DIR/drumDict (README.md beside this file documents
+// every entry). Models:
+//   compartment  Lee/Sheehan slice network (Lee 2008 Ch. 3, App. 10.2) with
+//                Lee's App. 10.2.3 correlations; steady holdup profile and
+//                the tracer RTD (exact / implicit / explicit integration);
+//                optional least-squares estimation from a measured curve
+//   twoPhase     Sherritt (1991) airborne/dense model, axial (DRUM3) solve:
+//                holdup, airborne fraction, mean residence time (no RTD)
+// Writes DIR/results/{summary,rtd,profile}.csv (+ estimation.csv) and PNGs,
+// each file whole or not at all.
+#include "drumDict.hpp"
+
+#include "drum/drift/driftModel.hpp"
+#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/io/atomicFile.hpp"
+#include "drum/io/csv.hpp"
+#include "drum/io/csvWriter.hpp"
+#include "drum/io/gnuplot.hpp"
+#include "drum/io/inputError.hpp"
+#include "drum/rtd/rtdEstimation.hpp"
+#include "drum/rtd/rtdMoments.hpp"
+#include "drum/rtd/rtdSimulation.hpp"
+#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/twoPhaseModel.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+
+namespace fs = std::filesystem;
+using namespace drumSolver;
+
+namespace
+{
+
+constexpr double pi = 3.14159265358979323846;
+const double nan = std::numeric_limits<double>::quiet_NaN();
+
+void say(const std::string& s)
+{
+    std::cout << "drumSolver: " << s << std::endl;
+}
+
+struct Measured
+{
+    std::vector<double> t, E;   // s, 1/s
+};
+
+Measured readTracer(const TracerFile& tf)
+{
+    Measured m;
+    try
+    {
+        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(tf.file.string());
+        in.read_header(io::ignore_extra_column, tf.timeColumn, tf.eColumn);
+        double t, e;
+        while (in.read_row(t, e))
+        {
+            m.t.push_back(t*tf.timeScale);
+            m.E.push_back(e*tf.eScale);
+        }
+    }
+    catch (const io::error::base& e)
+    {
+        throw drum::InputError(tf.file.string(), "rtd.tracer", e.what());
+    }
+    if (m.t.size() < 3)
+    {
+        throw drum::InputError(tf.file.string(), "rtd.tracer", "needs at least 3 rows");
+    }
+    return m;
+}
+
+drum::LeeDryer leeDryer(const DrumDict& d)
+{
+    drum::LeeDryer l;
+    l.length = d.length;
+    l.rpm = d.speedRpm;
+    l.slopeDeg = d.slopeDeg;
+    l.feedRate = d.feedRate;
+    l.bulkDensity = d.bulkDensity;
+    l.geometry.drumRadius = d.diameter/2;
+    l.geometry.baseLength = d.baseLength;
+    l.geometry.tipLength = d.tipLength;
+    l.geometry.baseAngleDeg = d.baseAngleDeg;
+    l.geometry.tipAngleDeg = d.tipAngleDeg;
+    l.geometry.nFlights = d.flightCount;
+    if (d.reposeDeg)
+    {
+        l.constantPhiDeg = *d.reposeDeg;
+    }
+    else
+    {
+        l.moistureInlet = d.moisture->first;
+        l.moistureOutlet = d.moisture->second;
+    }
+    l.designLoadMultiplier = d.designLoadMultiplier;
+    return l;
+}
+
+void plotIfPossible(const drum::Plot& p, const fs::path& file)
+{
+    if (!drum::gnuplotAvailable())
+    {
+        say("gnuplot not on PATH: " + file.filename().string() + " not drawn");
+        return;
+    }
+    drum::writePng(p, file);
+}
+
+void runCompartmentWith
+(
+    const DrumDict& d,
+    const drum::LeeDryer& dryer,
+    const drum::LeeParameters& p,
+    const std::optional<Measured>& measured,
+    const fs::path& out
+)
+{
+    const std::vector<drum::LeeSliceData> data = drum::leeSliceData(dryer, d.slices, p);
+    const drum::CompartmentNetwork net = drum::leeNetwork(dryer, d.slices, p);
+    say("steady state of " + std::to_string(d.slices) + " slices");
+    const drum::CompartmentSteadyState st = net.steadyState();
+    const drum::TracerSystem sys = net.tracerSystem(st);
+
+    {
+        std::ostringstream os;
+        os << "tracer RTD (" << drum::toString(d.rtd.integrator) << ", step " << d.rtd.timeStep << " s)";
+        say(os.str());
+    }
+    drum::RtdOptions opt = d.rtd;
+    int lastPct = -10;
+    opt.progress = [&](double f)
+    {
+        const int pct = int(100*std::min(f, 1.0));
+        if (pct >= lastPct + 10)
+        {
+            lastPct = pct;
+            std::cout << "drumSolver:   RTD " << pct << " % done" << std::endl;
+        }
+    };
+    const drum::RtdResult rtd = drum::simulateRtd(sys, opt);
+    for (const std::string& w : rtd.warnings)
+    {
+        say("warning: " + w);
+    }
+    const drum::RtdMoments sm = drum::sampledMoments(rtd.time, rtd.E);
+    const drum::RtdMoments ex = drum::exactMoments(sys, d.rtd.pulseDuration);
+
+    // summary.csv
+    std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
+        "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
+        "design_load_kg", "kiln_mass_kg", "kiln_time_s", "back_fraction", "forward_drag_factor", "slices"};
+    double design = 0;
+    for (const auto& s : data) design += s.slice.designLoad;
+    std::vector<double> row = {st.totalHoldup(), st.airborneFraction(), sm.mean, sm.sd(), sm.skewness,
+        rtd.recovered, ex.mean, ex.sd(), st.totalHoldup()/d.feedRate, design, st.kilnMass.sum(),
+        p.kilnTime, p.backFraction, p.dragFactor, double(d.slices)};
+    std::optional<drum::RtdMoments> mm;
+    if (measured)
+    {
+        mm = drum::sampledMoments(measured->t, measured->E);
+        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
+        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
+    }
+    drum::CsvTable summary(cols);
+    summary.addRow(row);
+    summary.write(out/"summary.csv");
+
+    drum::CsvTable r({"time_s", "E_per_s", "F_cumulative"});
+    double F = 0;
+    for (std::size_t i = 0; i < rtd.time.size(); ++i)
+    {
+        if (i > 0) F += 0.5*(rtd.time[i] - rtd.time[i - 1])*(rtd.E[i] + rtd.E[i - 1]);
+        r.addRow({rtd.time[i], rtd.E[i], F});
+    }
+    r.write(out/"rtd.csv");
+
+    drum::CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
+        "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",
+        "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B"});
+    const double dL = d.length/d.slices;
+    for (int i = 0; i < d.slices; ++i)
+    {
+        const auto& s = data[i];
+        prof.addRow({double(i + 1), (i + 0.5)*dL, s.phiDeg, s.slice.designLoad, st.passiveMass(i),
+            st.activeMass(i), st.kilnMass(i), (st.passiveMass(i) + st.activeMass(i))/dL,
+            st.releaseFlow(i), st.kilnFlow(i), st.forwardFlow(i), st.backFlow(i), st.returnFlow(i),
+            s.slice.passiveTime, s.slice.activeTime, s.correlations.fallHeight,
+            s.slice.forwardFraction, s.slice.backFraction});
+    }
+    prof.write(out/"profile.csv");
+
+    drum::Plot pr;
+    pr.title = "Residence-time distribution";
+    pr.xlabel = "time after pulse start (min)";
+    pr.ylabel = "E(t) (1/min)";
+    drum::PlotSeries model{"compartment model (" + std::to_string(d.slices) + " slices)", {}, {}};
+    for (std::size_t i = 0; i < rtd.time.size(); ++i)
+    {
+        model.x.push_back(rtd.time[i]/60);
+        model.y.push_back(rtd.E[i]*60);
+    }
+    pr.series.push_back(model);
+    if (measured)
+    {
+        std::string name = d.tracer->file.filename().string();
+        for (char& ch : name) if (ch == '_') ch = ' ';   // gnuplot enhanced text
+        drum::PlotSeries meas{"measured (" + name + ")", {}, {}, "points pt 7 ps 1.2"};
+        for (std::size_t i = 0; i < measured->t.size(); ++i)
+        {
+            if (measured->t[i] < 0) continue;
+            meas.x.push_back(measured->t[i]/60);
+            meas.y.push_back(measured->E[i]*60);
+        }
+        pr.series.push_back(meas);
+    }
+    plotIfPossible(pr, out/"rtd.png");
+
+    drum::Plot ph;
+    ph.title = "Holdup along the drum (feed end at 0)";
+    ph.xlabel = "axial position (m)";
+    ph.ylabel = "mass per slice (kg)";
+    drum::PlotSeries ps{"passive", prof.column("x_m"), prof.column("passive_kg")};
+    drum::PlotSeries pa{"active (airborne)", prof.column("x_m"), prof.column("active_kg")};
+    drum::PlotSeries pd{"design load", prof.column("x_m"), prof.column("design_load_kg"), "lines lw 2 dt 2"};
+    ph.series = {ps, pa, pd};
+    plotIfPossible(ph, out/"profile.png");
+
+    std::ostringstream os;
+    os << std::setprecision(4) << "holdup " << st.totalHoldup() << " kg, airborne " << 100*st.airborneFraction()
+       << " %, mean residence time " << sm.mean/60 << " min, SD " << sm.sd()/60 << " min";
+    if (mm)
+    {
+        os << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
+    }
+    say(os.str());
+}
+
+void runCompartment(const DrumDict& d, const fs::path& out)
+{
+    const drum::LeeDryer dryer = leeDryer(d);
+    const drum::LeeFlightGeometry invicta;
+    if (std::abs(dryer.geometry.tipRadius() - invicta.tipRadius()) > 1e-3 || d.flightCount != invicta.nFlights)
+    {
+        say("warning: Lee's correlations were regressed for the Invicta flights "
+            "(D 5 m, 28 flights, s1 0.195, s2 0.183, alpha2 117 deg); this geometry differs");
+    }
+    drum::LeeParameters p{d.kilnTime, d.backFraction, d.dragFactor};
+
+    std::optional<Measured> measured;
+    if (d.tracer)
+    {
+        measured = readTracer(*d.tracer);
+    }
+
+    if (!d.estimate.empty())
+    {
+        say("estimating " + std::to_string(d.estimate.size()) + " parameters from "
+          + d.tracer->file.filename().string() + " (" + std::to_string(d.starts) + " starts)");
+        std::vector<double> t, E;
+        for (std::size_t i = 0; i < measured->t.size(); ++i)
+        {
+            if (measured->t[i] >= 0) { t.push_back(measured->t[i]); E.push_back(measured->E[i]*3600.0); }
+        }
+        std::vector<drum::FitParameter> fp;
+        for (const std::string& n : d.estimate)
+        {
+            if (n == "kilnTime") fp.push_back({n, d.kilnTime, 0.01, 1e30});
+            else if (n == "backFraction") fp.push_back({n, d.backFraction, 0.0, 1.0});
+            else if (n == "dragFactor") fp.push_back({n, d.dragFactor, 0.0, 100.0});
+            else if (n == "forwardShare") fp.push_back({n, 0.5, 0.0, 1.0});
+            else fp.push_back({n, d.designLoadMultiplier, 0.05, 20.0});
+        }
+        const drum::PredictionModel model = drum::leeRtdModel(dryer, d.slices, p, d.estimate, d.rtd.pulseDuration, t);
+        const std::vector<drum::FitResult> runs = drum::multiStartFit(model, E, fp, d.starts);
+        if (runs.empty())
+        {
+            throw drum::InputError(d.path.string(), "estimation", "no start gave a feasible fit");
+        }
+        const drum::FitResult& best = runs.front();
+        drum::LeeDryer mod = dryer;
+        p = drum::leeParametersFrom(dryer, d.slices, p, d.estimate, best.values, &mod);
+        drum::AtomicFile f(out/"estimation.csv");
+        f.stream() << "run,parameter,initial,value,std_error,ci95_low,ci95_high,at_bound,sse\n" << std::setprecision(10);
+        for (std::size_t r = 0; r < runs.size(); ++r)
+        {
+            for (std::size_t k = 0; k < runs[r].names.size(); ++k)
+            {
+                f.stream() << r << ',' << runs[r].names[k] << ',' << runs[r].initial[k] << ',' << runs[r].values[k]
+                           << ',' << runs[r].standardErrors[k] << ',' << runs[r].ciLow[k] << ',' << runs[r].ciHigh[k]
+                           << ',' << (runs[r].atBound[k] ? 1 : 0) << ',' << runs[r].sse << '\n';
+            }
+        }
+        f.commit();
+        std::ostringstream os;
+        os << std::setprecision(4) << "best fit (SSE " << best.sse << " h^-2): t_kiln " << p.kilnTime
+           << " s, C_B " << p.backFraction << ", C_F^G " << p.dragFactor
+           << ", design-load multiplier " << mod.designLoadMultiplier
+           << "; worst start SSE " << runs.back().sse;
+        say(os.str());
+        return runCompartmentWith(d, mod, p, measured, out);
+    }
+    runCompartmentWith(d, dryer, p, measured, out);
+}
+
+} // namespace
+
+namespace
+{
+
+void runTwoPhase(const DrumDict& d, const fs::path& out)
+{
+    if (!d.reposeDeg)
+    {
+        throw drum::InputError(d.path.string(), "material.repose_deg",
+            "model twoPhase needs a constant kinetic angle of repose (deg, (0, 90])");
+    }
+    drum::TwoPhaseCase c;
+    c.name = d.path.parent_path().filename().string();
+    c.drum.shellDiameter = d.diameter;
+    c.drum.length = d.length;
+    c.drum.slope = d.slopeDeg*pi/180;
+    c.drum.speed = d.speedRpm/60;
+    say("tabulating the flight (Sherritt's horizontal-length table)");
+    c.exterior = drum::tabulateSherrittFlight(
+        drum::twoSidedFlightShape(d.diameter, d.baseLength, d.tipLength, d.tipAngleDeg*pi/180, d.baseAngleDeg*pi/180),
+        d.flightCount, d.length);
+    c.material.particleDensity = d.particleDensity;
+    c.material.bulkDensity = d.bulkDensity;
+    c.material.repose = *d.reposeDeg*pi/180;
+    c.material.sphericity = d.sphericity;
+    c.material.sieveSizes = d.sizes;
+    c.material.massFractions = d.fractions;
+    c.gas.massRate = d.gasMassRate;
+    c.gas.temperatureC = d.gasTemperatureC;
+    c.gas.direction = d.counterCurrent ? drum::GasFlow::countercurrent : drum::GasFlow::cocurrent;
+    c.options.drift = drum::makeDriftModel(d.drift, particleDrag::Gas::air(d.gasTemperatureC), {}, "model.drift");
+    say("two-phase model (Sherritt 1991), axial solve");
+    const drum::TwoPhaseModel model(c);
+    const drum::TwoPhaseResult r = model.solveAxial(d.feedRate);
+
+    drum::CsvTable summary({"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
+        "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg"});
+    summary.addRow({r.holdup_kg, r.airborne_fraction, r.meanResidenceTime, nan,
+        r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi});
+    summary.write(out/"summary.csv");
+
+    drum::CsvTable prof({"x_m", "discharge_angle_deg", "holdup_kg_per_m", "airborne_kg_per_m",
+        "airborne_flow_kg_s", "dense_flow_kg_s", "bed_slope_deg"});
+    for (auto it = r.profile.rbegin(); it != r.profile.rend(); ++it)
+    {
+        prof.addRow({d.length - it->distanceFromDischarge, it->dischargeAngle*180/pi,
+            it->holdup*d.bulkDensity, it->airborneHoldup*d.bulkDensity,
+            it->airborneFlow, it->denseFlow, it->bedSlope*180/pi});
+    }
+    prof.write(out/"profile.csv");
+    if (!r.profile.empty())
+    {
+        drum::Plot ph;
+        ph.title = "Two-phase holdup along the drum (feed end at 0)";
+        ph.xlabel = "axial position (m)";
+        ph.ylabel = "holdup (kg/m)";
+        ph.series = {{"total", prof.column("x_m"), prof.column("holdup_kg_per_m")},
+                     {"airborne", prof.column("x_m"), prof.column("airborne_kg_per_m")}};
+        plotIfPossible(ph, out/"profile.png");
+    }
+    std::ostringstream os;
+    os << std::setprecision(4) << "holdup " << r.holdup_kg << " kg, airborne " << 100*r.airborne_fraction
+       << " %, mean residence time " << r.meanResidenceTime/60 << " min (no RTD from this model: rtd.csv not written)";
+    say(os.str());
+}
+
+} // namespace
+
+
+int main(int argc, char* argv[])
+{
+    fs::path caseDir;
+    for (int i = 1; i < argc; ++i)
+    {
+        if (std::strcmp(argv[i], "-case") == 0 && i + 1 < argc)
+        {
+            caseDir = argv[++i];
+        }
+        else if (std::strcmp(argv[i], "-help") == 0 || std::strcmp(argv[i], "--help") == 0)
+        {
+            std::cout << "Usage: drumSolver -case DIR\n"
+                         "  reads DIR/drumDict (YAML), writes DIR/results/\n";
+            return 0;
+        }
+        else
+        {
+            std::cerr << "drumSolver: unknown argument '" << argv[i] << "'\nUsage: drumSolver -case DIR\n";
+            return 2;
+        }
+    }
+    if (caseDir.empty())
+    {
+        caseDir = ".";
+    }
+    DrumDict d;
+    try
+    {
+        say("reading " + (caseDir/"drumDict").string());
+        d = readDrumDict(caseDir);
+        const fs::path out = caseDir/"results";
+        fs::create_directories(out);
+        if (d.model == "compartment")
+        {
+            runCompartment(d, out);
+        }
+        else
+        {
+            runTwoPhase(d, out);
+        }
+        say("results in " + out.string());
+    }
+    catch (const drum::InputError& e)
+    {
+        // Model-level errors carry no file: this dictionary is where to fix them
+        std::cerr << "drumSolver: input error: "
+                  << (e.file().empty() ? (caseDir/"drumDict").string() + ": " : std::string())
+                  << e.what() << std::endl;
+        return 1;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "drumSolver: error: " << e.what() << std::endl;
+        return 1;
+    }
+    return 0;
+}
