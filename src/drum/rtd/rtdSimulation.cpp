@@ -1,10 +1,10 @@
 #include "drum/rtd/rtdSimulation.hpp"
 
 #include "drum/io/inputError.hpp"
+#include "drum/rtd/metzlerExponential.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseLU>
-#include <unsupported/Eigen/MatrixFunctions>
 
 #include <cmath>
 #include <limits>
@@ -58,25 +58,48 @@ public:
     virtual Vec step(const Vec& y) const = 0;
 };
 
-//- Exact: [y; 1]' = [[K, b u], [0, 0]] [y; 1], so
-//  exp(M h) = [[Phi, Gamma], [0, 1]] (augmented matrix exponential)
+//- Exact: z = (1, y) obeys z' = [[0, 0], [b u, K]] z, so
+//  exp(M h) = [[1, 0], [Gamma, Phi]] (augmented matrix exponential, the
+//  input state first so the band stays narrow), computed as a Metzler
+//  exponential without cancellation (metzlerExponential.hpp)
+BandedMatrix augmentedExponential(const TracerSystem& s, double h, double u)
+{
+    const Eigen::Index n = s.size();
+    {
+        std::vector<Eigen::Triplet<double>> t;
+        for (int k = 0; k < s.K.outerSize(); ++k)
+        {
+            for (SpMat::InnerIterator it(s.K, k); it; ++it)
+            {
+                t.emplace_back(it.row() + 1, it.col() + 1, it.value());
+            }
+        }
+        for (Eigen::Index i = 0; i < n; ++i)
+        {
+            if (s.b(i)*u != 0) t.emplace_back(i + 1, 0, s.b(i)*u);
+        }
+        SpMat M(n + 1, n + 1);
+        M.setFromTriplets(t.begin(), t.end());
+        return metzlerExponential(M, h);
+    }
+}
+
 class ExactStepper : public Stepper
 {
 public:
     ExactStepper(const TracerSystem& s, double h, double u)
+    :
+        phi_(augmentedExponential(s, h, u))
+    {}
+    Vec step(const Vec& y) const override
     {
-        const Eigen::Index n = s.size();
-        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-        M.topLeftCorner(n, n) = Eigen::MatrixXd(s.K)*h;
-        M.topRightCorner(n, 1) = s.b*(u*h);
-        const Eigen::MatrixXd E = M.exp();
-        phi_ = E.topLeftCorner(n, n);
-        gamma_ = E.topRightCorner(n, 1);
+        Vec z(y.size() + 1);
+        z(0) = 1.0;
+        z.tail(y.size()) = y;
+        return (phi_*z).tail(y.size());
     }
-    Vec step(const Vec& y) const override { return phi_*y + gamma_; }
 private:
-    Eigen::MatrixXd phi_;
-    Vec gamma_;
+    BandedMatrix phi_;
 };
 
 SpMat identityMinus(const SpMat& K, double a)
@@ -326,15 +349,13 @@ std::vector<double> exactRtdAt
 )
 {
     const Eigen::Index n = sys.size();
-    const Eigen::MatrixXd K(sys.K);
 
     // Response inside the pulse: integrate from 0 with input 1/T
     auto insidePulse = [&](double t)
     {
-        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-        M.topLeftCorner(n, n) = K*t;
-        M.topRightCorner(n, 1) = sys.b*(t/T);
-        return Vec(M.exp().topRightCorner(n, 1));
+        Vec z = Vec::Zero(n + 1);
+        z(0) = 1.0;
+        return Vec((augmentedExponential(sys, t, 1.0/T)*z).tail(n));
     };
 
     // State at the end of the pulse (or the impulse at t = 0)
@@ -381,13 +402,13 @@ std::vector<double> exactRtdAt
     const double span = after.empty() ? 0.0 : after.back() - after.front();
     const bool stepping = g > 0 && span/g < 200.0*after.size() + 2000.0;
 
-    std::map<double, Eigen::MatrixXd> cache;
-    auto phi = [&](double dt) -> const Eigen::MatrixXd&
+    std::map<double, BandedMatrix> cache;
+    auto phi = [&](double dt) -> const BandedMatrix&
     {
         auto it = cache.find(dt);
         if (it == cache.end())
         {
-            it = cache.emplace(dt, Eigen::MatrixXd((K*dt).exp())).first;
+            it = cache.emplace(dt, metzlerExponential(sys.K, dt)).first;
         }
         return it->second;
     };
@@ -415,7 +436,7 @@ std::vector<double> exactRtdAt
             if (stepping && !first)
             {
                 const long k = std::lround(dt/g);
-                const Eigen::MatrixXd& P = phi(g);
+                const BandedMatrix& P = phi(g);
                 for (long s = 0; s < k; ++s) y = P*y;
             }
             else
