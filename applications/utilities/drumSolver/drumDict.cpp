@@ -151,6 +151,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     d.tipLength = r.number(fl, "flights", "tipLength", 0, d.diameter/2, 0.0);
     d.baseAngleDeg = r.number(fl, "flights", "baseAngle_deg", 30, 150, 90.0);
     d.tipAngleDeg = r.number(fl, "flights", "tipAngle_deg", 60, 180, 90.0);
+    d.flightAxialLength = r.number(fl, "flights", "axialLength", 0, d.length, d.length, true);
 
     const YAML::Node m = r.section(root, "material");
     d.feedRate = r.number(m, "material", "feedRate", 0, 1e4, {}, true);
@@ -202,7 +203,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     const YAML::Node mo = r.section(root, "model");
     d.model = r.word(mo, "model", "type", {"compartment", "twoPhase"});
     d.slices = int(r.number(mo, "model", "slices", 1, 1000, 30.0));
-    d.partition = r.word(mo, "model", "partition", {"leeCorrelations"}, std::string("leeCorrelations"));
+    d.partition = r.word(mo, "model", "partition", {"leeCorrelations", "flightModel"}, std::string("leeCorrelations"));
     d.kilnTime = r.number(mo, "model", "kilnTime", 0, big, 9.28, true);
     d.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);
     d.dragFactor = r.number(mo, "model", "forwardDragFactor", 0, 100, 1.0);
@@ -249,9 +250,9 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
         {
             throw InputError(r.file, "estimation", "needs a measured curve: rtd.tracer");
         }
-        if (d.model != "compartment")
+        if (d.model != "compartment" || d.partition != "leeCorrelations")
         {
-            throw InputError(r.file, "estimation", "only for model.type compartment");
+            throw InputError(r.file, "estimation", "only for model.type compartment with partition leeCorrelations");
         }
         const YAML::Node ps = e["parameters"];
         if (!ps || !ps.IsSequence() || ps.size() == 0)

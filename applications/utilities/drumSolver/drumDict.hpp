@@ -30,7 +30,7 @@ struct DrumDict
     double length, diameter, slopeDeg, speedRpm;
     // flights (two-section flight, Lee Table 4.1 parameters)
     int flightCount;
-    double baseLength, tipLength, baseAngleDeg, tipAngleDeg;
+    double baseLength, tipLength, baseAngleDeg, tipAngleDeg, flightAxialLength;
     // material
     double feedRate, bulkDensity, particleDensity, sphericity;
     std::optional<double> reposeDeg;                 //!< constant phi
@@ -43,7 +43,7 @@ struct DrumDict
     // model
     std::string model;          //!< compartment | twoPhase
     int slices;
-    std::string partition;      //!< leeCorrelations
+    std::string partition;      //!< leeCorrelations | flightModel
     double kilnTime, backFraction, dragFactor, designLoadMultiplier;
     std::string drift;          //!< twoPhase: isolated | sherritt
     // rtd

@@ -21,6 +21,7 @@
 #include "drum/rtd/rtdEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
+#include "drum/transport/compartmentFlightModel.hpp"
 #include "drum/transport/compartmentLeeDryer.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
 
@@ -120,8 +121,30 @@ void runCompartmentWith
     const fs::path& out
 )
 {
-    const std::vector<drum::LeeSliceData> data = drum::leeSliceData(dryer, d.slices, p);
-    const drum::CompartmentNetwork net = drum::leeNetwork(dryer, d.slices, p);
+    std::vector<drum::LeeSliceData> data;
+    if (d.partition == "flightModel")
+    {
+        const particleDrag::Gas air = particleDrag::Gas::air(d.gasTemperatureC);
+        drum::FlightModelPartition fp;
+        fp.drift = drum::makeDriftModel(d.drift, air, {}, "model.drift");
+        // Mean gas velocity over the free cross-section (holdup neglected)
+        fp.gasVelocity = d.gasMassRate/(air.density*pi*d.diameter*d.diameter/4);
+        fp.counterCurrent = d.counterCurrent;
+        for (double s : d.sizes) fp.sizes.push_back(s*d.sphericity);
+        fp.fractions = d.fractions;
+        fp.particleDensity = d.particleDensity;
+        fp.flightAxialLength = d.flightAxialLength;
+        say("slice parameters from Lee's flight model and the " + d.drift + " drift model (V_g "
+          + std::to_string(fp.gasVelocity) + " m/s)");
+        data = drum::flightModelSliceData(dryer, d.slices, fp);
+    }
+    else
+    {
+        data = drum::leeSliceData(dryer, d.slices, p);
+    }
+    std::vector<drum::CompartmentSlice> slices;
+    for (const auto& s : data) slices.push_back(s.slice);
+    const drum::CompartmentNetwork net(slices, dryer.feedRate, p.kilnTime);
     say("steady state of " + std::to_string(d.slices) + " slices");
     const drum::CompartmentSteadyState st = net.steadyState();
     const drum::TracerSystem sys = net.tracerSystem(st);
@@ -158,7 +181,9 @@ void runCompartmentWith
     for (const auto& s : data) design += s.slice.designLoad;
     std::vector<double> row = {st.totalHoldup(), st.airborneFraction(), sm.mean, sm.sd(), sm.skewness,
         rtd.recovered, ex.mean, ex.sd(), st.totalHoldup()/d.feedRate, design, st.kilnMass.sum(),
-        p.kilnTime, p.backFraction, p.dragFactor, double(d.slices)};
+        p.kilnTime,
+        d.partition == "flightModel" ? data[0].slice.backFraction : p.backFraction,
+        d.partition == "flightModel" ? nan : p.dragFactor, double(d.slices)};
     std::optional<drum::RtdMoments> mm;
     if (measured)
     {
@@ -244,7 +269,8 @@ void runCompartment(const DrumDict& d, const fs::path& out)
 {
     const drum::LeeDryer dryer = leeDryer(d);
     const drum::LeeFlightGeometry invicta;
-    if (std::abs(dryer.geometry.tipRadius() - invicta.tipRadius()) > 1e-3 || d.flightCount != invicta.nFlights)
+    if (d.partition == "leeCorrelations"
+     && (std::abs(dryer.geometry.tipRadius() - invicta.tipRadius()) > 1e-3 || d.flightCount != invicta.nFlights))
     {
         say("warning: Lee's correlations were regressed for the Invicta flights "
             "(D 5 m, 28 flights, s1 0.195, s2 0.183, alpha2 117 deg); this geometry differs");

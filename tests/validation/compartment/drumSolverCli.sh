@@ -30,6 +30,16 @@ bad() {  # bad <sed expression> <expected text in the error>
     grep -q "$2" "$work/bad/log" || { cat "$work/bad/log"; fail "error does not say '$2' ($1)"; }
     [ ! -e "$work/bad/results/summary.csv" ] || fail "results written for bad input ($1)"
 }
+# partition flightModel (Lee's geometric flights + Sherritt drift)
+mkdir -p "$work/flightModel"
+sed -e 's/^  partition: leeCorrelations/  partition: flightModel/' -e 's/^  slices: 33/  slices: 20/' \
+    "$work/drumDict" > "$work/flightModel/drumDict"
+"$solver" -case "$work/flightModel" > "$work/flightModel/log" 2>&1 || { cat "$work/flightModel/log"; fail "flightModel case did not run"; }
+[ -s "$work/flightModel/results/rtd.csv" ] || fail "flightModel rtd.csv missing"
+sed -i 's/^  slices: 20/  slices: 200/' "$work/flightModel/drumDict"
+if "$solver" -case "$work/flightModel" > "$work/flightModel/log" 2>&1; then fail "flightModel accepted 200 slices"; fi
+grep -q "model.slices" "$work/flightModel/log" || fail "nearest-neighbour error does not name model.slices"
+
 mkdir -p "$work/bad"
 bad 's/feedRate: .*/feedRate: -3/' "material.feedRate.*range"
 bad 's/feedRate: .*/feedRate: 0/' "material.feedRate.*range"
