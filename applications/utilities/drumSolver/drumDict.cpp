@@ -208,6 +208,8 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     d.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);
     d.dragFactor = r.number(mo, "model", "forwardDragFactor", 0, 100, 1.0);
     d.designLoadMultiplier = r.number(mo, "model", "designLoadMultiplier", 0, 100, 1.0, true);
+    d.stagnantRatio = r.number(mo, "model", "stagnantRatio", 0, 10, 0.0);
+    d.exchangeTime = r.number(mo, "model", "exchangeTime", 1, 1e6, 600.0);
     d.drift = r.word(mo, "model", "drift", {"isolated", "sherritt"}, std::string("sherritt"));
 
     const YAML::Node rt = r.section(root, "rtd", false);
@@ -243,6 +245,8 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     }
 
     d.starts = 1;
+    d.logObjective = false;
+    d.logOffset = 0.01;
     if (root["estimation"])
     {
         const YAML::Node e = root["estimation"];
@@ -264,14 +268,18 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
         {
             std::string n = p.as<std::string>();
             if (n == "forwardDragFactor") n = "dragFactor";
-            if (n != "kilnTime" && n != "backFraction" && n != "dragFactor" && n != "forwardShare" && n != "designLoadMultiplier")
+            if (n != "kilnTime" && n != "backFraction" && n != "dragFactor" && n != "forwardShare"
+             && n != "designLoadMultiplier" && n != "stagnantRatio" && n != "exchangeTime")
             {
                 throw InputError(r.file, "estimation.parameters", "unknown parameter '" + n
-                    + "'; allowed: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier");
+                    + "'; allowed: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier, "
+                      "stagnantRatio, exchangeTime");
             }
             d.estimate.push_back(n);
         }
         d.starts = int(r.number(e, "estimation", "starts", 1, 100, 4.0));
+        d.logObjective = r.word(e, "estimation", "objective", {"linear", "log"}, std::string("linear")) == "log";
+        d.logOffset = r.number(e, "estimation", "logOffset", 0, 100, 0.01, true);
     }
     return d;
 }

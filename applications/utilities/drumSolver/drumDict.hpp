@@ -45,6 +45,7 @@ struct DrumDict
     int slices;
     std::string partition;      //!< leeCorrelations | flightModel
     double kilnTime, backFraction, dragFactor, designLoadMultiplier;
+    double stagnantRatio, exchangeTime;   //!< stagnant-zone extension
     std::string drift;          //!< twoPhase: isolated | sherritt
     // rtd
     drum::RtdOptions rtd;
@@ -52,6 +53,8 @@ struct DrumDict
     // estimation
     std::vector<std::string> estimate;
     int starts;
+    bool logObjective;
+    double logOffset;           //!< 1/h
 };
 
 //- Reads DIR/drumDict; throws drum::InputError naming the file, entry and range

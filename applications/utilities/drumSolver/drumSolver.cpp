@@ -117,6 +117,7 @@ void runCompartmentWith
     const DrumDict& d,
     const drum::LeeDryer& dryer,
     const drum::LeeParameters& p,
+    const drum::StagnantExchange& stagnant,
     const std::optional<Measured>& measured,
     const fs::path& out
 )
@@ -147,7 +148,9 @@ void runCompartmentWith
     const drum::CompartmentNetwork net(slices, dryer.feedRate, p.kilnTime);
     say("steady state of " + std::to_string(d.slices) + " slices");
     const drum::CompartmentSteadyState st = net.steadyState();
-    const drum::TracerSystem sys = net.tracerSystem(st);
+    const drum::TracerSystem sys = net.tracerSystem(st, stagnant);
+    const double stagnantKg = stagnant.massRatio*st.passiveMass.sum();
+    const double holdup = st.totalHoldup() + stagnantKg;
 
     {
         std::ostringstream os;
@@ -176,14 +179,16 @@ void runCompartmentWith
     // summary.csv
     std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
         "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
-        "design_load_kg", "kiln_mass_kg", "kiln_time_s", "back_fraction", "forward_drag_factor", "slices"};
+        "design_load_kg", "kiln_mass_kg", "kiln_time_s", "back_fraction", "forward_drag_factor", "slices",
+        "stagnant_kg", "exchange_time_s"};
     double design = 0;
     for (const auto& s : data) design += s.slice.designLoad;
-    std::vector<double> row = {st.totalHoldup(), st.airborneFraction(), sm.mean, sm.sd(), sm.skewness,
-        rtd.recovered, ex.mean, ex.sd(), st.totalHoldup()/d.feedRate, design, st.kilnMass.sum(),
+    std::vector<double> row = {holdup, st.activeMass.sum()/holdup, sm.mean, sm.sd(), sm.skewness,
+        rtd.recovered, ex.mean, ex.sd(), holdup/d.feedRate, design, st.kilnMass.sum(),
         p.kilnTime,
         d.partition == "flightModel" ? data[0].slice.backFraction : p.backFraction,
-        d.partition == "flightModel" ? nan : p.dragFactor, double(d.slices)};
+        d.partition == "flightModel" ? nan : p.dragFactor, double(d.slices),
+        stagnantKg, stagnant.massRatio > 0 ? stagnant.exchangeTime : nan};
     std::optional<drum::RtdMoments> mm;
     if (measured)
     {
@@ -244,6 +249,20 @@ void runCompartmentWith
         pr.series.push_back(meas);
     }
     plotIfPossible(pr, out/"rtd.png");
+    // The tail on a log scale (positive values only)
+    drum::Plot lg = pr;
+    lg.logy = true;
+    lg.title = "Residence-time distribution (log scale: the tail)";
+    for (drum::PlotSeries& se : lg.series)
+    {
+        drum::PlotSeries keep{se.title, {}, {}, se.style};
+        for (std::size_t i = 0; i < se.x.size(); ++i)
+        {
+            if (se.y[i] > 1e-7) { keep.x.push_back(se.x[i]); keep.y.push_back(se.y[i]); }
+        }
+        se = keep;
+    }
+    plotIfPossible(lg, out/"rtd_log.png");
 
     drum::Plot ph;
     ph.title = "Holdup along the drum (feed end at 0)";
@@ -256,7 +275,7 @@ void runCompartmentWith
     plotIfPossible(ph, out/"profile.png");
 
     std::ostringstream os;
-    os << std::setprecision(4) << "holdup " << st.totalHoldup() << " kg, airborne " << 100*st.airborneFraction()
+    os << std::setprecision(4) << "holdup " << holdup << " kg, airborne " << 100*st.activeMass.sum()/holdup
        << " %, mean residence time " << sm.mean/60 << " min, SD " << sm.sd()/60 << " min";
     if (mm)
     {
@@ -299,10 +318,16 @@ void runCompartment(const DrumDict& d, const fs::path& out)
             else if (n == "backFraction") fp.push_back({n, d.backFraction, 0.0, 1.0});
             else if (n == "dragFactor") fp.push_back({n, d.dragFactor, 0.0, 100.0});
             else if (n == "forwardShare") fp.push_back({n, 0.5, 0.0, 1.0});
+            else if (n == "stagnantRatio") fp.push_back({n, d.stagnantRatio, 0.0, 10.0});
+            else if (n == "exchangeTime") fp.push_back({n, d.exchangeTime, 1.0, 1e6});
             else fp.push_back({n, d.designLoadMultiplier, 0.05, 20.0});
         }
-        const drum::PredictionModel model = drum::leeRtdModel(dryer, d.slices, p, d.estimate, d.rtd.pulseDuration, t);
-        const std::vector<drum::FitResult> runs = drum::multiStartFit(model, E, fp, d.starts);
+        const drum::RtdObjective objective{d.logObjective, d.logOffset};
+        const drum::StagnantExchange stagnant0{d.stagnantRatio, d.exchangeTime};
+        const drum::PredictionModel model = drum::leeRtdModel(dryer, d.slices, p, d.estimate,
+            d.rtd.pulseDuration, t, stagnant0, objective);
+        const std::vector<drum::FitResult> runs = drum::multiStartFit(model,
+            drum::transformForObjective(E, objective), fp, d.starts);
         if (runs.empty())
         {
             throw drum::InputError(d.path.string(), "estimation", "no start gave a feasible fit");
@@ -310,6 +335,7 @@ void runCompartment(const DrumDict& d, const fs::path& out)
         const drum::FitResult& best = runs.front();
         drum::LeeDryer mod = dryer;
         p = drum::leeParametersFrom(dryer, d.slices, p, d.estimate, best.values, &mod);
+        const drum::StagnantExchange zFit = drum::stagnantFrom(stagnant0, d.estimate, best.values);
         drum::AtomicFile f(out/"estimation.csv");
         f.stream() << "run,parameter,initial,value,std_error,ci95_low,ci95_high,at_bound,sse\n" << std::setprecision(10);
         for (std::size_t r = 0; r < runs.size(); ++r)
@@ -323,14 +349,15 @@ void runCompartment(const DrumDict& d, const fs::path& out)
         }
         f.commit();
         std::ostringstream os;
-        os << std::setprecision(4) << "best fit (SSE " << best.sse << " h^-2): t_kiln " << p.kilnTime
+        os << std::setprecision(4) << "best fit (SSE " << best.sse << (d.logObjective ? " in ln E" : " h^-2") << "): t_kiln " << p.kilnTime
            << " s, C_B " << p.backFraction << ", C_F^G " << p.dragFactor
            << ", design-load multiplier " << mod.designLoadMultiplier
+           << ", stagnant M_s/M_p " << zFit.massRatio << " exchanging in " << zFit.exchangeTime << " s"
            << "; worst start SSE " << runs.back().sse;
         say(os.str());
-        return runCompartmentWith(d, mod, p, measured, out);
+        return runCompartmentWith(d, mod, p, zFit, measured, out);
     }
-    runCompartmentWith(d, dryer, p, measured, out);
+    runCompartmentWith(d, dryer, p, {d.stagnantRatio, d.exchangeTime}, measured, out);
 }
 
 } // namespace

@@ -304,6 +304,38 @@ std::vector<FitResult> multiStartFit
 }
 
 
+std::vector<double> transformForObjective(const std::vector<double>& E, const RtdObjective& o)
+{
+    if (!o.logarithmic)
+    {
+        return E;
+    }
+    requirePositive(o.offset, "log objective offset (1/h)");
+    std::vector<double> out;
+    out.reserve(E.size());
+    for (const double e : E)
+    {
+        out.push_back(std::log(std::max(e, 0.0) + o.offset));
+    }
+    return out;
+}
+
+StagnantExchange stagnantFrom
+(
+    const StagnantExchange& base,
+    const std::vector<std::string>& names,
+    const std::vector<double>& v
+)
+{
+    StagnantExchange z = base;
+    for (std::size_t k = 0; k < names.size(); ++k)
+    {
+        if (names[k] == "stagnantRatio") z.massRatio = v[k];
+        else if (names[k] == "exchangeTime") z.exchangeTime = v[k];
+    }
+    return z;
+}
+
 double leeMaxForwardFraction0(const LeeDryer& dryer, const int n)
 {
     double cf0 = 0;
@@ -350,16 +382,20 @@ PredictionModel leeRtdModel
     const LeeParameters& base,
     const std::vector<std::string>& names,
     const double pulse,
-    const std::vector<double>& times
+    const std::vector<double>& times,
+    const StagnantExchange& stagnant,
+    const RtdObjective& objective
 )
 {
     for (const std::string& nm : names)
     {
         if (nm != "kilnTime" && nm != "backFraction" && nm != "dragFactor"
-         && nm != "forwardShare" && nm != "designLoadMultiplier")
+         && nm != "forwardShare" && nm != "designLoadMultiplier"
+         && nm != "stagnantRatio" && nm != "exchangeTime")
         {
             throw InputError("", "estimation parameter " + nm,
-                "unknown; allowed: kilnTime, backFraction, dragFactor, forwardShare, designLoadMultiplier");
+                "unknown; allowed: kilnTime, backFraction, dragFactor, forwardShare, designLoadMultiplier, "
+                "stagnantRatio, exchangeTime");
         }
     }
     return [=](const std::vector<double>& v)
@@ -367,10 +403,10 @@ PredictionModel leeRtdModel
         LeeDryer d = dryer;
         const LeeParameters p = leeParametersFrom(dryer, n, base, names, v, &d);
         const CompartmentNetwork net = leeNetwork(d, n, p);
-        const TracerSystem sys = net.tracerSystem(net.steadyState());
+        const TracerSystem sys = net.tracerSystem(net.steadyState(), stagnantFrom(stagnant, names, v));
         std::vector<double> E = exactRtdAt(sys, pulse, times);
         for (double& e : E) e *= 3600.0;    // 1/h, as Lee's D.O.Normalised
-        return E;
+        return transformForObjective(E, objective);
     };
 }
 

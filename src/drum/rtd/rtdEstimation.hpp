@@ -99,10 +99,24 @@ LeeParameters leeParametersFrom
     LeeDryer* modified = nullptr
 );
 
+//- How model and data are compared
+struct RtdObjective
+{
+    //- false: residuals of E in 1/h (Lee's constant variance). true:
+    //  residuals of ln(E + offset), which weights the tail like the peak
+    bool logarithmic = false;
+    double offset = 0.01;   //!< 1/h
+};
+
+//- Measured E (1/h) as the objective compares it
+std::vector<double> transformForObjective(const std::vector<double>& E, const RtdObjective& objective);
+
 //- Lee's dryer as a prediction model: E(t) in 1/h at `times` (s after the
 //  pulse start) for a rectangular pulse, with the named free parameters
 //  taken from the vector: "kilnTime", "backFraction", "dragFactor",
-//  "forwardShare", "designLoadMultiplier". Others come from `base`.
+//  "forwardShare", "designLoadMultiplier", and for the stagnant-zone
+//  extension "stagnantRatio", "exchangeTime". Others come from `base` and
+//  `stagnant`. The output is transformed as the objective says.
 PredictionModel leeRtdModel
 (
     const LeeDryer& dryer,
@@ -110,7 +124,17 @@ PredictionModel leeRtdModel
     const LeeParameters& base,
     const std::vector<std::string>& freeParameters,
     double pulseDuration,
-    const std::vector<double>& times
+    const std::vector<double>& times,
+    const StagnantExchange& stagnant = {},
+    const RtdObjective& objective = {}
+);
+
+//- Stagnant-zone values from named values (defaults from `base`)
+StagnantExchange stagnantFrom
+(
+    const StagnantExchange& base,
+    const std::vector<std::string>& names,
+    const std::vector<double>& values
 );
 
 } // namespace drum

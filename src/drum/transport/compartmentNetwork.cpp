@@ -187,4 +187,50 @@ TracerSystem CompartmentNetwork::tracerSystem(const CompartmentSteadyState& st) 
     return sys;
 }
 
+
+TracerSystem CompartmentNetwork::tracerSystem
+(
+    const CompartmentSteadyState& st,
+    const StagnantExchange& z
+) const
+{
+    TracerSystem base = tracerSystem(st);
+    if (z.massRatio == 0)
+    {
+        return base;
+    }
+    requireInRange(z.massRatio, 0.0, 1e3, "stagnant mass ratio");
+    requirePositive(z.exchangeTime, "stagnant exchange time (s)");
+    const int n = nSlices();
+    const int m = 2*n;
+    std::vector<Eigen::Triplet<double>> trip;
+    for (int k = 0; k < base.K.outerSize(); ++k)
+    {
+        for (Eigen::SparseMatrix<double>::InnerIterator it(base.K, k); it; ++it)
+        {
+            trip.emplace_back(it.row(), it.col(), it.value());
+        }
+    }
+    for (int i = 0; i < n; ++i)
+    {
+        const double mp = st.passiveMass(i);
+        const double ms = z.massRatio*mp;
+        const double f = ms/z.exchangeTime;
+        const int p = passiveIndex(i), s = m + i;
+        trip.emplace_back(p, p, -f/mp);
+        trip.emplace_back(s, p, f/mp);
+        trip.emplace_back(s, s, -f/ms);
+        trip.emplace_back(p, s, f/ms);
+    }
+    TracerSystem sys;
+    sys.K.resize(m + n, m + n);
+    sys.K.setFromTriplets(trip.begin(), trip.end());
+    sys.K.makeCompressed();
+    sys.b = Eigen::VectorXd::Zero(m + n);
+    sys.b.head(m) = base.b;
+    sys.c = Eigen::RowVectorXd::Zero(m + n);
+    sys.c.head(m) = base.c;
+    return sys;
+}
+
 } // namespace drum

@@ -49,6 +49,17 @@ struct CompartmentSteadyState
     double airborneFraction() const { return activeMass.sum()/totalHoldup(); }
 };
 
+//- Extension beyond Lee's model (not in the thesis): each passive cell
+//  exchanges material with a stagnant zone of mass massRatio*M_p at the
+//  flow F_s = M_s/exchangeTime each way (no net flow, so the bulk steady
+//  state is unchanged). A slowly exchanging zone gives the long RTD tail
+//  that Lee's network cannot (his Ch. 8 asks for a revised structure).
+struct StagnantExchange
+{
+    double massRatio = 0;       //!< M_s/M_p (0: none)
+    double exchangeTime = 1;    //!< M_s/F_s, s
+};
+
 class CompartmentNetwork
 {
 public:
@@ -77,6 +88,13 @@ public:
     //  flows stay those of `state` and the tracer balances (Lee's $(m x)
     //  equations) are linear in the tracer masses. Ordering P_1, A_1, ...
     TracerSystem tracerSystem(const CompartmentSteadyState& state) const;
+
+    //- The same with stagnant zones appended (states 2N .. 3N-1: S_1 ... S_N)
+    TracerSystem tracerSystem
+    (
+        const CompartmentSteadyState& state,
+        const StagnantExchange& stagnant
+    ) const;
 
     //- Index of the passive / active cell of slice i (0-based) in the state vector
     static int passiveIndex(int i) { return 2*i; }

@@ -146,3 +146,22 @@ TEST(CompartmentNetwork, BadInputNamesTheEntry)
     const CompartmentNetwork blocked({{100, 10, 1, 0.1, 0.1}}, 5.0, std::numeric_limits<double>::infinity());
     EXPECT_THROW(blocked.steadyState(), InputError);
 }
+
+TEST(CompartmentNetwork, StagnantZonesAddTheirMassToTheMeanResidenceTime)
+{
+    // Holdup theorem: mean residence time = tracer-accessible mass / feed
+    const CompartmentNetwork net(mixedSlices(), 20.0, 8.0);
+    const CompartmentSteadyState st = net.steadyState();
+    const StagnantExchange z{0.3, 500.0};
+    const TracerSystem sys = net.tracerSystem(st, z);
+    ASSERT_EQ(sys.size(), 3*net.nSlices());
+    const Eigen::RowVectorXd colSum = Eigen::RowVectorXd::Ones(sys.size())*Eigen::MatrixXd(sys.K) + sys.c;
+    EXPECT_LT(colSum.cwiseAbs().maxCoeff(), 1e-14);
+    // -K^-1 b summed = mean time (impulse): solve densely, independent of rtdMoments
+    const Eigen::VectorXd z1 = Eigen::MatrixXd(-sys.K).partialPivLu().solve(sys.b);
+    const double holdup = st.totalHoldup() + z.massRatio*st.passiveMass.sum();
+    EXPECT_NEAR(z1.sum(), holdup/20.0, 1e-9*holdup);
+    // No stagnant mass: the plain network
+    const TracerSystem plain = net.tracerSystem(st, StagnantExchange{});
+    EXPECT_EQ(plain.size(), 2*net.nSlices());
+}
