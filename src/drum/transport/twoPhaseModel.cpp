@@ -346,12 +346,25 @@ void TwoPhaseModel::holdups(double thetaI, double psiI, TwoPhaseState& s) const
         }
         return 0.5*recv;
     };
-    std::vector<double> brk{g_.thetaC, g_.thetaE, thetaD, thetaF};
-    for (const double x : ex_.nodes())
+    double ndEx;
+    if (!in_)
     {
-        brk.push_back(E - x);
+        // Open drum (theta_c = theta_e = pi/2): the flight at theta holds
+        // 1/2 (C(2 pi) - C(2 pi - min(theta, theta_f))), C = int l^2, so its
+        // integral over [0, theta_i] is exact through int C (Eqs 101, 102)
+        const double top = std::min(thetaI, thetaF);
+        ndEx = 0.5*(thetaI*ex_.cumulativeL2(E) - ex_.integralOfCumulativeL2(E - top, E)
+                    - std::max(0.0, thetaI - thetaF)*ex_.cumulativeL2(E - thetaF));
     }
-    const double ndEx = integrate(hnd, 0.0, thetaI, within(brk, 0.0, thetaI));
+    else
+    {
+        std::vector<double> brk{g_.thetaC, g_.thetaE, thetaD, thetaF};
+        for (const double x : ex_.nodes())
+        {
+            brk.push_back(E - x);
+        }
+        ndEx = integrate(hnd, 0.0, thetaI, within(brk, 0.0, thetaI));
+    }
     const double disEx = 0.5*ex_.iteratedDischarge(thetaI, E);  // int_theta_i^2pi h (Eq 97)
 
     double ndIn = 0;
@@ -376,6 +389,17 @@ void TwoPhaseModel::holdups(double thetaI, double psiI, TwoPhaseState& s) const
     s.nonDischargingHoldup = Nex/(2*pi)*ndEx + ndIn;  // Eq 116/123, 126
     s.dischargingHoldup = Nex/(2*pi)*disEx + disIn;
     s.airborneHoldup = airborneMass(thetaI, psiI)/case_.material.bulkDensity;  // Eq 127
+    // What the flights shed into the curtains: Eq 40/41 summed over the
+    // discharging arcs, with the airborne limits of Eq 91 (buried flights
+    // shed onto the covering surface, not into the curtains)
+    const double phi = case_.material.repose;
+    const double lo = thetaI > 0.5*pi + phi ? thetaI : pi + 2*phi - thetaI;
+    double shed = Nex*ex_.integralL2(lo, 2*pi);
+    if (in_)
+    {
+        shed += case_.interior->count()*in_->integralL2(psiI, pi);
+    }
+    s.circulation = 0.5*case_.drum.speed*case_.material.bulkDensity*shed;
     s.holdup = s.airborneHoldup + s.nonDischargingHoldup + s.dischargingHoldup;
 }
 
@@ -591,6 +615,22 @@ std::vector<TwoPhaseState> TwoPhaseModel::sweep(double from, double to, int poin
 }
 
 
+TwoPhaseProfilePoint TwoPhaseModel::profilePoint(const TwoPhaseState& s, double distanceFromDischarge) const
+{
+    TwoPhaseProfilePoint p;
+    p.distanceFromDischarge = distanceFromDischarge;
+    p.dischargeAngle = s.dischargeAngle;
+    p.holdup = s.holdup;
+    p.airborneHoldup = s.airborneHoldup;
+    p.airborneFlow = s.airborneFlow;
+    p.denseFlow = s.denseFlow;
+    p.circulation = s.circulation;
+    p.airborneCapacity = s.airborneCapacity;
+    p.holdupFractions = s.holdupFractions;
+    return p;
+}
+
+
 TwoPhaseResult TwoPhaseModel::constantResult(const TwoPhaseState& s) const
 {
     const double L = case_.drum.length;
@@ -718,18 +758,35 @@ double TwoPhaseModel::thetaOfHoldup(double H) const
     {
         if (Hvalue_[k] >= H)
         {
+            // Illinois regula falsi in the 1-degree bracket of the table:
+            // a handful of holdup evaluations instead of ~40 bisections
             double a = Htheta_[k];       // H(a) >= H
             double b = Htheta_[k + 1];   // H(b) < H
-            for (int it = 0; it < 40 && b - a > 1e-10; ++it)
+            double fa = Hvalue_[k] - H;
+            double fb = Hvalue_[k + 1] - H;
+            int side = 0;
+            const double tolH = 1e-12*std::max(H, 1e-300);
+            for (int it = 0; it < 100 && b - a > 1e-12; ++it)
             {
-                const double m = 0.5*(a + b);
-                if (holdupAt(m) >= H)
+                const double t = fa - fb > 0 ? std::clamp(b - fb*(b - a)/(fb - fa), a, b) : 0.5*(a + b);
+                const double ft = holdupAt(t) - H;
+                if (std::abs(ft) <= tolH)
                 {
-                    a = m;
+                    return t;
+                }
+                if (ft > 0)
+                {
+                    a = t;
+                    fa = ft;
+                    if (side == 1) fb *= 0.5;
+                    side = 1;
                 }
                 else
                 {
-                    b = m;
+                    b = t;
+                    fb = ft;
+                    if (side == -1) fa *= 0.5;
+                    side = -1;
                 }
             }
             return 0.5*(a + b);
@@ -807,7 +864,7 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
         const TwoPhaseState s = atDischargeAngle(r.dischargeAngle);
         for (double z : {0.0, case_.drum.length})
         {
-            r.profile.push_back({z, s.dischargeAngle, s.holdup, s.airborneHoldup, s.airborneFlow, s.denseFlow, 0.0});
+            r.profile.push_back(profilePoint(s, z));
         }
         return r;
     }
@@ -905,8 +962,8 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
         const double s = k*h;
         Eval e0;
         const auto k1 = rhs(s, y, &e0);
-        r.profile.push_back({s, e0.s.dischargeAngle, e0.s.holdup, e0.s.airborneHoldup,
-                             e0.s.airborneFlow, e0.s.denseFlow, e0.gamma});
+        r.profile.push_back(profilePoint(e0.s, s));
+        r.profile.back().bedSlope = e0.gamma;
         auto add = [&](const std::vector<double>& kk, double f)
         {
             std::vector<double> out(y);
@@ -926,8 +983,8 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
     }
     Eval eL;
     rhs(L, y, &eL);
-    r.profile.push_back({L, eL.s.dischargeAngle, eL.s.holdup, eL.s.airborneHoldup,
-                         eL.s.airborneFlow, eL.s.denseFlow, eL.gamma});
+    r.profile.push_back(profilePoint(eL.s, L));
+    r.profile.back().bedSlope = eL.gamma;
 
     const double intH = y[1];
     r.holdup_kg = rhoB*intH;

@@ -50,6 +50,7 @@ struct TwoPhaseState
     double holdup = 0;                 //!< H = H_1 + H_2, m3/m
 
     double gasVelocity = 0;            //!< V_g in the free annulus, m/s
+    double circulation = 0;            //!< solids discharged into the curtains per metre, kg/(s m): n rho_b/2 (N_ex int l_ex^2 + N_in int l_in^2) over the airborne limits of Eq 91 (Eq 40 summed)
     std::vector<double> airborneCapacity;  //!< n rho_b/2 (N_ex I_ex,i + N_in I_in,i), kg/s (Eq 51 / x_d,i)
     double slopedSurfaces = 0;         //!< N_ex,s
     double chord = 0;                  //!< c, m
@@ -74,6 +75,9 @@ struct TwoPhaseProfilePoint
     double airborneFlow = 0;           //!< F_1, kg/s
     double denseFlow = 0;              //!< F_2, kg/s
     double bedSlope = 0;               //!< gamma, rad (Eq 135, capped at phi)
+    double circulation = 0;            //!< kg/(s m) into the curtains (TwoPhaseState)
+    std::vector<double> airborneCapacity;  //!< A_i = F_1,i/x_d,i, kg/s (Eq 51)
+    std::vector<double> holdupFractions;   //!< x_d,i (Eq 53)
 };
 
 struct TwoPhaseResult
@@ -122,6 +126,9 @@ public:
     //  With an imposed dense flow the holdup is constant: returns the
     //  lowest-holdup constant solution with a flat profile.
     TwoPhaseResult solveAxial(double feedRate, const AxialOptions& options = {}) const;
+
+    //- The profile point of a DRUM1 state (constant holdup)
+    TwoPhaseProfilePoint profilePoint(const TwoPhaseState& s, double distanceFromDischarge = 0) const;
 
     //- Total holdup H(theta_i) [m3/m] alone (no flows): cheap
     double holdupAt(double thetaI) const;
