@@ -1,5 +1,7 @@
 #include "drum/drift/driftModel.hpp"
 
+#include "drum/drift/driftDictionary.hpp"
+
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
@@ -66,17 +68,10 @@ std::shared_ptr<const DriftModel> makeDriftModel
     const std::string& entry
 )
 {
-    if (name == "isolated")
-    {
-        return std::make_shared<IsolatedParticleDrift>(gas, law);
-    }
-    if (name == "sherritt")
-    {
-        return std::make_shared<SherrittSheetDrift>(gas, law);
-    }
-    std::ostringstream os;
-    os << "unknown drift model '" << name << "': valid names are isolated, sherritt";
-    throw InputError("", entry, os.str());
+    // Default table, policy and constants files (driftDictionary.hpp)
+    DriftSettings settings;
+    settings.model = name;
+    return makeDriftModel(settings, gas, law, entry);
 }
 
 } // namespace drum

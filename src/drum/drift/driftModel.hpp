@@ -67,8 +67,10 @@ public:
     std::string name() const override { return "sherritt"; }
 };
 
-//- "isolated" or "sherritt"; throws drum::InputError naming `entry` and the
-//  valid names otherwise
+//- By name with the default table, policy (refuse) and constants files:
+//  isolated, sherritt, table, tableVc, porousSheet (driftDictionary.hpp has
+//  the overload taking paths and the policy); throws drum::InputError naming
+//  `entry` and the valid names otherwise
 std::shared_ptr<const DriftModel> makeDriftModel
 (
     const std::string& name,

@@ -1,0 +1,130 @@
+#include "drum/drift/driftDictionary.hpp"
+
+#include "drum/drift/porousSheetDrift.hpp"
+#include "drum/drift/tableDrift.hpp"
+#include "drum/io/inputError.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#ifndef DRYER_PROJECT_DIR
+#define DRYER_PROJECT_DIR "."
+#endif
+
+namespace drum
+{
+
+const std::vector<std::string>& driftModelNames()
+{
+    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet"};
+    return names;
+}
+
+
+std::filesystem::path defaultDriftTableFile()
+{
+    const char* env = std::getenv("DRYER_PROJECT");
+    const std::filesystem::path root = env ? env : DRYER_PROJECT_DIR;
+    return root/"cases"/"driftTable"/"driftTable.csv";
+}
+
+
+namespace
+{
+std::string nameList()
+{
+    std::string s;
+    for (const auto& n : driftModelNames()) s += (s.empty() ? "" : ", ") + n;
+    return s;
+}
+
+std::string scalar(const YAML::Node& n, const std::string& file, const std::string& entry)
+{
+    if (!n.IsScalar()) throw InputError(file, entry, "must be a single word or path");
+    return n.as<std::string>();
+}
+} // namespace
+
+
+DriftSettings readDriftSettings
+(
+    const YAML::Node& root,
+    const std::string& file,
+    const std::filesystem::path& caseDir,
+    const std::string& defaultModel
+)
+{
+    DriftSettings s;
+    s.model = defaultModel;
+    const YAML::Node model = root["model"];
+    if (model && model.IsMap() && model["drift"])
+    {
+        s.model = scalar(model["drift"], file, "model.drift");
+    }
+    const auto& names = driftModelNames();
+    if (std::find(names.begin(), names.end(), s.model) == names.end())
+    {
+        throw InputError(file, "model.drift", "unknown drift model '" + s.model + "': valid names are " + nameList());
+    }
+    const YAML::Node d = root["drift"];
+    if (!d) return s;
+    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, outside, constants)");
+    for (const auto& kv : d)
+    {
+        const std::string k = kv.first.as<std::string>();
+        if (k != "table" && k != "outside" && k != "constants")
+        {
+            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, outside, constants");
+        }
+    }
+    auto path = [&](const char* key)
+    {
+        std::filesystem::path p = scalar(d[key], file, std::string("drift.") + key);
+        if (p.is_relative()) p = caseDir/p;
+        if (!std::filesystem::exists(p))
+        {
+            throw InputError(file, std::string("drift.") + key, "file not found: " + p.string());
+        }
+        return p;
+    };
+    if (d["table"]) s.table = path("table");
+    if (d["constants"]) s.constants = path("constants");
+    if (d["outside"])
+    {
+        s.outside = parseOutOfRangePolicy(scalar(d["outside"], file, "drift.outside"), "drift.outside", file);
+    }
+    return s;
+}
+
+
+std::shared_ptr<const DriftModel> makeDriftModel
+(
+    const DriftSettings& s,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law,
+    const std::string& entry
+)
+{
+    if (s.model == "isolated") return std::make_shared<IsolatedParticleDrift>(gas, law);
+    if (s.model == "sherritt") return std::make_shared<SherrittSheetDrift>(gas, law);
+    if (s.model == "table" || s.model == "tableVc")
+    {
+        DriftTableOptions o;
+        o.outside = s.outside;
+        o.warn = s.warn;
+        const auto file = s.table.empty() ? defaultDriftTableFile() : s.table;
+        auto table = std::make_shared<const DriftTable>(DriftTable::read(file, o));
+        if (s.model == "table") return std::make_shared<TableDrift>(table);
+        return std::make_shared<TableVcDrift>(table, gas, law);
+    }
+    if (s.model == "porousSheet")
+    {
+        const auto file = s.constants.empty() ? defaultPorousSheetConstantsFile() : s.constants;
+        return std::make_shared<PorousSheetDrift>(readPorousSheetConstants(file), gas, law);
+    }
+    throw InputError("", entry, "unknown drift model '" + s.model + "': valid names are " + nameList());
+}
+
+} // namespace drum

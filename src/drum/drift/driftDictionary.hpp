@@ -1,0 +1,66 @@
+// The drift entries of a case dictionary (YAML) and the drift-model factory
+// that needs more than a name (table path, out-of-range policy, constants):
+//
+//   model:
+//     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet
+//   drift:                 # optional
+//     table: path          # CFD drift table, relative to the case folder;
+//                          # default $DRYER_PROJECT/cases/driftTable/driftTable.csv
+//     outside: refuse      # refuse (default) | clamp, queries outside the table
+//     constants: path      # porousSheet constants; default
+//                          # $DRYER_PROJECT/cases/driftModels/porousSheet.yaml
+#ifndef DRUM_DRIFT_DRIFTDICTIONARY_HPP
+#define DRUM_DRIFT_DRIFTDICTIONARY_HPP
+
+#include "drum/drift/driftModel.hpp"
+#include "drum/drift/driftTable.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace YAML { class Node; }
+
+namespace drum
+{
+
+struct DriftSettings
+{
+    std::string model = "sherritt";
+    std::filesystem::path table;       //!< empty: defaultDriftTableFile()
+    OutOfRangePolicy outside = OutOfRangePolicy::refuse;
+    std::filesystem::path constants;   //!< empty: defaultPorousSheetConstantsFile()
+    std::function<void(const std::string&)> warn;  //!< clamp warnings; null: std::cerr
+};
+
+//- Every drift-model name makeDriftModel knows
+const std::vector<std::string>& driftModelNames();
+
+//- $DRYER_PROJECT (or the source tree)/cases/driftTable/driftTable.csv
+std::filesystem::path defaultDriftTableFile();
+
+//- Read model.drift and the optional drift section of `root` (the YAML of
+//  `file`); paths relative to caseDir. InputError names file and entry.
+DriftSettings readDriftSettings
+(
+    const YAML::Node& root,
+    const std::string& file,
+    const std::filesystem::path& caseDir,
+    const std::string& defaultModel = "sherritt"
+);
+
+//- Build the named model; InputError naming `entry` and the valid names
+//  for an unknown name, or naming the table/constants file when unreadable
+std::shared_ptr<const DriftModel> makeDriftModel
+(
+    const DriftSettings& settings,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law = {},
+    const std::string& entry = "model.drift"
+);
+
+} // namespace drum
+
+#endif

@@ -1,0 +1,105 @@
+#include "drum/drift/porousSheetFit.hpp"
+
+#include "drum/io/inputError.hpp"
+
+#include <ceres/ceres.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace drum
+{
+
+namespace
+{
+
+struct LnResidual
+{
+    double N, lnVc;
+    template<class T>
+    bool operator()(const T* p, T* r) const
+    {
+        // p = (ln a, ln b): ln model = -b ln(1 + a N)
+        r[0] = T(lnVc) + exp(p[1])*log(T(1.0) + exp(p[0])*T(N));
+        return true;
+    }
+};
+
+} // namespace
+
+
+PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& gas, const particleDrag::DragLaw& law)
+{
+    std::vector<LnResidual> data;
+    for (const auto& row : table.rows())
+    {
+        DriftQuery q;
+        q.gasVelocity = row.x[gasVelocityAxis];
+        q.spillRate = row.x[spillRateAxis];
+        q.fallHeight = row.x[fallHeightAxis];
+        q.flightLength = row.x[flightLengthAxis];
+        q.particleDensity = row.x[densityAxis];
+        q.particleDiameter = row.x[diameterAxis];
+        if (!(q.gasVelocity > 0 && q.fallHeight > 0 && q.spillRate > 0 && row.v.vcOverVg > 0)) continue;
+        data.push_back({porousSheetDragNumber(q, gas, law), std::log(row.v.vcOverVg)});
+    }
+    if (data.size() < 3)
+    {
+        throw InputError(table.file().string(), "rows", "porousSheet fit needs at least 3 rows with V_g, y, S and "
+            "vc_over_vg > 0; the table has " + std::to_string(data.size()));
+    }
+    // Start: b = 1/2 (screen with bypass), a from the median N (aN ~ 1)
+    std::vector<double> Ns;
+    for (const auto& d : data) Ns.push_back(d.N);
+    std::nth_element(Ns.begin(), Ns.begin() + Ns.size()/2, Ns.end());
+    const double Nmed = Ns[Ns.size()/2] > 0 ? Ns[Ns.size()/2] : 1.0;
+    double p[2] = {std::log(1/Nmed), std::log(0.5)};
+
+    ceres::Problem problem;
+    for (const auto& d : data)
+    {
+        problem.AddResidualBlock(new ceres::AutoDiffCostFunction<LnResidual, 1, 2>(new LnResidual(d)), nullptr, p);
+    }
+    problem.SetParameterLowerBound(p, 0, -30);
+    problem.SetParameterUpperBound(p, 0, 30);
+    problem.SetParameterLowerBound(p, 1, std::log(1e-3));
+    problem.SetParameterUpperBound(p, 1, std::log(20.0));
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = 200;
+    so.logging_type = ceres::SILENT;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, &problem, &summary);
+
+    PorousSheetFit fit;
+    fit.converged = summary.termination_type == ceres::CONVERGENCE;
+    fit.rows = int(data.size());
+    fit.constants.a = std::exp(p[0]);
+    fit.constants.b = std::exp(p[1]);
+    double s2 = 0;
+    for (const auto& d : data)
+    {
+        double r;
+        d(p, &r);
+        s2 += r*r;
+    }
+    fit.rmsLn = std::sqrt(s2/data.size());
+    auto& pv = fit.constants.provenance;
+    pv["fittedTo"] = table.file().string();
+    for (const char* key : {"generator", "mesh", "cases", "dictionary"})
+    {
+        if (table.header().count(key)) pv[std::string("table_") + key] = table.header().at(key);
+    }
+    pv["rows"] = std::to_string(fit.rows);
+    std::ostringstream os;
+    os.precision(4);
+    os << fit.rmsLn;
+    pv["rmsLnResidual"] = os.str();
+    pv["converged"] = fit.converged ? "true" : "false";
+    std::ostringstream g;
+    g << "density " << gas.density << " kg/m3, viscosity " << gas.viscosity << " Pa s, drag " << law.name();
+    pv["gas"] = g.str();
+    return fit;
+}
+
+} // namespace drum

@@ -1,0 +1,42 @@
+// Drift models that read the CFD drift table (driftTable.hpp):
+//   table    drift_m interpolated directly for the query's class diameter;
+//            a drum incline adds the free slide y sin(alpha) (the incline
+//            term of Sherritt 1991 Eq 12 over t^2 = 2y/g; the table is level)
+//   tableVc  V_c/V_g from the table, then the shared core's lone-particle
+//            fall at V_c (Sherritt's route, Eq 141/142, with the CFD's
+//            shielding in place of the Eq 142 correlation)
+#ifndef DRUM_DRIFT_TABLEDRIFT_HPP
+#define DRUM_DRIFT_TABLEDRIFT_HPP
+
+#include "drum/drift/driftModel.hpp"
+#include "drum/drift/driftTable.hpp"
+
+namespace drum
+{
+
+class TableDrift : public DriftModel
+{
+public:
+    explicit TableDrift(std::shared_ptr<const DriftTable> table);
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return "table"; }
+    const DriftTable& table() const { return *table_; }
+
+private:
+    std::shared_ptr<const DriftTable> table_;
+};
+
+class TableVcDrift : public IsolatedParticleDrift
+{
+public:
+    TableVcDrift(std::shared_ptr<const DriftTable> table, particleDrag::Gas gas, particleDrag::DragLaw law = {});
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return "tableVc"; }
+
+private:
+    std::shared_ptr<const DriftTable> table_;
+};
+
+} // namespace drum
+
+#endif

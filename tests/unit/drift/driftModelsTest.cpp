@@ -1,0 +1,201 @@
+// Drift models on the table (table, tableVc), the porousSheet reduced model
+// (limits, fit recovering known constants from a table it generated), the
+// factory and the drift dictionary
+#include "drum/drift/driftDictionary.hpp"
+#include "drum/drift/porousSheetDrift.hpp"
+#include "drum/drift/porousSheetFit.hpp"
+#include "drum/drift/tableDrift.hpp"
+#include "drum/io/inputError.hpp"
+#include "particleDrag/loneParticleFall.hpp"
+#include "syntheticTable.hpp"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+
+using namespace drum;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+fs::path tmpDir()
+{
+    const fs::path d = fs::temp_directory_path()/("driftModelsTest_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+const particleDrag::Gas air = particleDrag::Gas::air(20);
+
+DriftQuery query(const synthetic::Point& p)
+{
+    DriftQuery q;
+    q.gasVelocity = p[0];
+    q.spillRate = p[1];
+    q.fallHeight = p[2];
+    q.flightLength = p[3];
+    q.particleDensity = p[4];
+    q.particleDiameter = p[5];
+    return q;
+}
+
+// A table whose drift is the lone particle at V_c = r V_g with a given r(point)
+fs::path loneParticleTable(const std::string& name, const std::function<double(const synthetic::Point&)>& ratio)
+{
+    const fs::path f = tmpDir()/name;
+    synthetic::write(f, synthetic::table(synthetic::defaultGrid(), [&](const synthetic::Point& p) -> synthetic::Values
+    {
+        const double r = ratio(p);
+        const double d = particleDrag::loneParticleAdvance({}, {p[5], p[4]}, air, r*p[0], p[2]);
+        return {r, d, 1.0};
+    }));
+    return f;
+}
+
+} // namespace
+
+
+TEST(TableDrift, TableAndTableVcOnNodes)
+{
+    const auto f = loneParticleTable("half.csv", [](const synthetic::Point&) { return 0.5; });
+    const auto table = std::make_shared<const DriftTable>(DriftTable::read(f));
+    const TableDrift td(table);
+    const TableVcDrift tv(table, air);
+    const IsolatedParticleDrift iso(air);
+    for (const auto& r : table->rows())
+    {
+        DriftQuery q = query(r.x);
+        EXPECT_NEAR(td.displacement(q), r.v.drift, 1e-12);
+        DriftQuery half = q;
+        half.gasVelocity *= 0.5;
+        EXPECT_NEAR(tv.displacement(q), iso.displacement(half), 1e-12);
+        // incline: free slide added to the level table
+        q.incline = 0.05;
+        EXPECT_NEAR(td.displacement(q), r.v.drift + q.fallHeight*std::sin(0.05), 1e-12);
+    }
+    // between nodes tableVc is exact (V_c/V_g constant), table interpolates
+    const DriftQuery mid = query({2.2, 5, 3, 1.3, 2000, 3e-4});
+    DriftQuery half = mid;
+    half.gasVelocity *= 0.5;
+    EXPECT_NEAR(tv.displacement(mid), iso.displacement(half), 1e-12);
+    EXPECT_NEAR(td.displacement(mid)/iso.displacement(half), 1.0, 0.15);
+}
+
+
+TEST(PorousSheet, DiluteCurtainIsTheIsolatedParticleDenseShieldsStrongly)
+{
+    PorousSheetConstants c;
+    c.a = 20;
+    c.b = 0.5;
+    const PorousSheetDrift m(c, air);
+    const IsolatedParticleDrift iso(air);
+    DriftQuery q = query({3, 1e-6, 5, 2, 2650, 5e-4});
+    EXPECT_NEAR(m.velocityRatio(q), 1.0, 1e-4);
+    EXPECT_NEAR(m.displacement(q), iso.displacement(q), 1e-4*iso.displacement(q));
+    q.spillRate = 0;
+    EXPECT_EQ(m.velocityRatio(q), 1.0);
+    EXPECT_DOUBLE_EQ(m.displacement(q), iso.displacement(q));
+    // ratio falls monotonically with spill rate and flight length, rises with fall height
+    double last = 1;
+    for (double S : {1.0, 5.0, 20.0, 100.0, 1000.0})
+    {
+        q.spillRate = S;
+        const double r = m.velocityRatio(q);
+        EXPECT_LT(r, last);
+        last = r;
+    }
+    EXPECT_LT(last, 0.05);   // dense: strong shielding
+    EXPECT_LT(m.displacement(q), 0.05*iso.displacement(q) + 1e-12);
+    q.spillRate = 20;
+    DriftQuery longer = q, higher = q;
+    longer.flightLength = 4;
+    higher.fallHeight = 10;
+    EXPECT_LT(m.velocityRatio(longer), m.velocityRatio(q));
+    EXPECT_GT(m.velocityRatio(higher), m.velocityRatio(q));
+    // dense power law: (aN)^-b
+    q.spillRate = 1e5;
+    EXPECT_NEAR(std::log(m.velocityRatio(q)), -c.b*std::log(c.a*m.dragNumber(q)), 1e-3);
+}
+
+
+TEST(PorousSheet, FitRecoversConstantsOfATableItGenerated)
+{
+    PorousSheetConstants truth;
+    truth.a = 3.7;
+    truth.b = 0.62;
+    const PorousSheetDrift model(truth, air);
+    const auto f = loneParticleTable("porous.csv", [&](const synthetic::Point& p) { return model.velocityRatio(query(p)); });
+    const DriftTable table = DriftTable::read(f);
+    const PorousSheetFit fit = fitPorousSheet(table, air);
+    EXPECT_TRUE(fit.converged);
+    EXPECT_EQ(fit.rows, int(table.size()));
+    EXPECT_NEAR(fit.constants.a/truth.a, 1.0, 1e-4);
+    EXPECT_NEAR(fit.constants.b/truth.b, 1.0, 1e-4);
+    EXPECT_LT(fit.rmsLn, 1e-6);
+    EXPECT_EQ(fit.constants.provenance.at("fittedTo"), f.string());
+    // constants file round trip
+    const fs::path cf = tmpDir()/"porousSheet.yaml";
+    writePorousSheetConstants(cf, fit.constants);
+    const auto back = readPorousSheetConstants(cf);
+    EXPECT_NEAR(back.a, fit.constants.a, 1e-8*fit.constants.a);
+    EXPECT_NEAR(back.b, fit.constants.b, 1e-8);
+    EXPECT_EQ(back.provenance.at("rows"), std::to_string(fit.rows));
+    // malformed constants
+    synthetic::write(tmpDir()/"bad.yaml", "model: porousSheet\na_per_m: -1\nb: 0.5\n");
+    EXPECT_THROW(readPorousSheetConstants(tmpDir()/"bad.yaml"), InputError);
+    synthetic::write(tmpDir()/"other.yaml", "model: other\na_per_m: 1\nb: 0.5\n");
+    EXPECT_THROW(readPorousSheetConstants(tmpDir()/"other.yaml"), InputError);
+    EXPECT_THROW(readPorousSheetConstants(tmpDir()/"absent.yaml"), InputError);
+}
+
+
+TEST(DriftFactory, NamesTablesAndErrors)
+{
+    const auto f = loneParticleTable("factory.csv", [](const synthetic::Point& p) { return 1.0/(1 + 0.02*p[1]); });
+    DriftSettings s;
+    s.table = f;
+    for (const auto& name : {"isolated", "sherritt", "table", "tableVc"})
+    {
+        s.model = name;
+        EXPECT_EQ(makeDriftModel(s, air)->name(), name);
+    }
+    s.model = "magic";
+    try
+    {
+        makeDriftModel(s, air);
+        FAIL();
+    }
+    catch (const InputError& e)
+    {
+        for (const auto& n : driftModelNames()) EXPECT_NE(std::string(e.what()).find(n), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(makeDriftModel("magic", air), InputError);
+    s.model = "table";
+    s.table = tmpDir()/"absent.csv";
+    EXPECT_THROW(makeDriftModel(s, air), InputError);
+    s.model = "porousSheet";
+    s.constants = tmpDir()/"absent.yaml";
+    EXPECT_THROW(makeDriftModel(s, air), InputError);
+}
+
+
+TEST(DriftDictionary, ReadsModelTableAndPolicy)
+{
+    const fs::path dir = tmpDir();
+    const auto f = loneParticleTable("dict.csv", [](const synthetic::Point&) { return 0.7; });
+    auto read = [&](const std::string& yaml) { return readDriftSettings(YAML::Load(yaml), "drumDict", dir); };
+    auto s = read("model: {drift: tableVc}\ndrift: {table: dict.csv, outside: clamp}\n");
+    EXPECT_EQ(s.model, "tableVc");
+    EXPECT_EQ(s.table, dir/"dict.csv");
+    EXPECT_EQ(s.outside, OutOfRangePolicy::clamp);
+    EXPECT_EQ(read("model: {type: compartment}\n").model, "sherritt");
+    EXPECT_EQ(read("model: {drift: table}\n").outside, OutOfRangePolicy::refuse);
+    const auto m = makeDriftModel(s, air);
+    EXPECT_EQ(m->name(), "tableVc");
+    EXPECT_THROW(read("model: {drift: cfdMagic}\n"), InputError);
+    EXPECT_THROW(read("model: {drift: table}\ndrift: {table: nothere.csv}\n"), InputError);
+    EXPECT_THROW(read("model: {drift: table}\ndrift: {outside: sometimes}\n"), InputError);
+    EXPECT_THROW(read("model: {drift: table}\ndrift: {tabel: dict.csv}\n"), InputError);
+}
