@@ -1,0 +1,156 @@
+#include "cfdPrediction.hpp"
+
+#include "drum/io/csv.hpp"
+#include "drum/io/inputError.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace curtainDrift
+{
+
+namespace fs = std::filesystem;
+using drum::InputError;
+
+namespace
+{
+std::string join(const std::vector<double>& v)
+{
+    std::ostringstream os;
+    os.precision(10);
+    for (std::size_t i = 0; i < v.size(); ++i) os << (i ? "," : "") << v[i];
+    return os.str();
+}
+
+std::string quote(const std::string& s)
+{
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+} // namespace
+
+
+double readCurtainResult
+(
+    const fs::path& file,
+    double fallHeight,
+    const std::vector<double>& diameters,
+    const std::vector<double>& fractions
+)
+{
+    const std::string f = file.string();
+    if (!fs::exists(file)) throw InputError(f, "", "curtainCase wrote no result");
+    std::vector<double> drift(diameters.size(), std::nan(""));
+    try
+    {
+        io::CSVReader<6, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(f);
+        in.read_header(io::ignore_extra_column, "class", "diameter_m", "fall_height_m", "drift_m",
+                       "captured_fraction", "converged");
+        std::string cls, ds, ys, dxs, caps, conv;
+        while (in.read_row(cls, ds, ys, dxs, caps, conv))
+        {
+            if (cls == "bulk") continue;
+            const std::string where = "line " + std::to_string(in.get_file_line());
+            double d, y, dx;
+            try
+            {
+                d = std::stod(ds);
+                y = std::stod(ys);
+                dx = std::stod(dxs);
+            }
+            catch (const std::exception&)
+            {
+                throw InputError(f, where, "diameter_m, fall_height_m and drift_m must be numbers");
+            }
+            if (std::abs(y - fallHeight) > 1e-6*std::max(1.0, fallHeight)) continue;
+            if (conv != "1" && conv != "true" && conv != "yes")
+            {
+                throw InputError(f, where, "case not converged");
+            }
+            for (std::size_t i = 0; i < diameters.size(); ++i)
+            {
+                if (std::abs(d - diameters[i]) <= 1e-6*diameters[i]) drift[i] = dx;
+            }
+        }
+    }
+    catch (const io::error::base& e)
+    {
+        throw InputError(f, "", std::string("malformed curtainResult.csv: ") + e.what());
+    }
+    double sum = 0;
+    for (std::size_t i = 0; i < diameters.size(); ++i)
+    {
+        if (std::isnan(drift[i]))
+        {
+            std::ostringstream os;
+            os << "no row for diameter " << diameters[i] << " m at fall height " << fallHeight << " m";
+            throw InputError(f, "class rows", os.str());
+        }
+        sum += fractions[i]*drift[i];
+    }
+    return sum;
+}
+
+
+std::map<int, double> cfdPredictions
+(
+    const std::vector<drum::WindTunnelTest>& tests,
+    const std::map<std::string, drum::WindTunnelMaterial>& materials,
+    const CfdOptions& o
+)
+{
+    using clock = std::chrono::steady_clock;
+    const auto start = clock::now();
+    std::map<int, double> out;
+    fs::create_directories(o.work);
+    int done = 0;
+    for (const auto& t : tests)
+    {
+        const auto& m = materials.at(t.material);
+        std::vector<double> d, w;
+        for (const auto& c : m.classes)
+        {
+            d.push_back(c.diameter);
+            w.push_back(c.massFraction);
+        }
+        const fs::path dir = o.work/("test" + std::to_string(t.test));
+        fs::remove_all(dir);
+        std::ostringstream cmd;
+        cmd.precision(10);
+        cmd << o.command << " -dir " << quote(dir.string()) << " -gasVelocity " << t.airVelocity
+            << " -spillRate " << t.spillRate << " -fallHeight " << t.fallHeight
+            << " -flightLength " << t.flightLength << " -density " << m.particleDensity
+            << " -diameters " << join(d) << " -fractions " << join(w) << " -heights " << t.fallHeight
+            << " -level " << o.level << " -np " << o.np;
+        if (!o.drag.empty()) cmd << " -drag " << o.drag;
+        if (o.keep) cmd << " -keep";
+        const fs::path log = o.work/("test" + std::to_string(t.test) + ".log");
+        std::cout << "curtainDrift: cfd " << done + 1 << "/" << tests.size() << ": test " << t.test
+                  << " (" << t.material << ", V_g " << t.airVelocity << " m/s, S " << t.spillRate
+                  << " kg/(m s), y " << t.fallHeight << " m) ..." << std::flush;
+        const auto t0 = clock::now();
+        const int rc = std::system((cmd.str() + " > " + quote(log.string()) + " 2>&1").c_str());
+        if (rc != 0)
+        {
+            std::cout << " failed" << std::endl;
+            throw InputError(log.string(), "test " + std::to_string(t.test),
+                "curtainCase failed (exit " + std::to_string(rc) + "); command: " + cmd.str());
+        }
+        out[t.test] = readCurtainResult(dir/"curtainResult.csv", t.fallHeight, d, w);
+        ++done;
+        const double el = std::chrono::duration<double>(clock::now() - start).count();
+        const double row = std::chrono::duration<double>(clock::now() - t0).count();
+        std::cout << " " << std::fixed << std::setprecision(3) << out[t.test] << " m in "
+                  << std::setprecision(0) << row << " s; about " << el/done*(tests.size() - done)
+                  << " s left" << std::defaultfloat << std::endl;
+        if (!o.keep) fs::remove_all(dir);
+    }
+    return out;
+}
+
+} // namespace curtainDrift

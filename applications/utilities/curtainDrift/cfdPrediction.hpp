@@ -1,0 +1,48 @@
+// The `cfd` model of curtainDrift: one curtainCase run (H6b's curtainFoam
+// driver) per test row with the row's conditions and the material's size
+// classes, in a work folder; reads DIR/curtainResult.csv back.
+#ifndef CURTAINDRIFT_CFDPREDICTION_HPP
+#define CURTAINDRIFT_CFDPREDICTION_HPP
+
+#include "drum/windTunnel/windTunnelData.hpp"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace curtainDrift
+{
+
+struct CfdOptions
+{
+    std::string level = "coarse";   //!< curtainCase -level
+    int np = 1;                     //!< curtainCase -np
+    std::string drag;               //!< curtainCase -drag (empty: its default)
+    std::filesystem::path work;     //!< one sub-folder per test
+    bool keep = false;              //!< keep the case folders
+    std::string command = "curtainCase";
+};
+
+//- Bulk mean advance per test: sum_i x_i drift_i at the row's fall height
+//  over the class rows of curtainResult.csv. Progress goes to std::cout.
+std::map<int, double> cfdPredictions
+(
+    const std::vector<drum::WindTunnelTest>& tests,
+    const std::map<std::string, drum::WindTunnelMaterial>& materials,
+    const CfdOptions& options
+);
+
+//- Read one curtainResult.csv: the mass-weighted drift at fall height y of
+//  the classes with the given diameters and fractions (matched by diameter)
+double readCurtainResult
+(
+    const std::filesystem::path& file,
+    double fallHeight,
+    const std::vector<double>& diameters,
+    const std::vector<double>& fractions
+);
+
+} // namespace curtainDrift
+
+#endif

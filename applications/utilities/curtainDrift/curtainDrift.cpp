@@ -1,0 +1,223 @@
+// curtainDrift: drift models on wind-tunnel style test rows (issue 6).
+//
+//   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
+//                [-table FILE] [-outside refuse|clamp] [-constants FILE]
+//                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
+//       writes test,mean_advance_m for every row of FILE.csv (columns of
+//       shared/data/windtunnel_tests.csv; the measured advance is never read)
+//   curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml
+//       least-squares constants of the reduced model on the CFD table
+//   curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
+//       RMS ln(pred/measured), bias and share within 25 % per model and fall height
+//
+// Models: isolated, sherritt, table, tableVc, porousSheet, cfd (README.md).
+#include "cfdPrediction.hpp"
+#include "driftScores.hpp"
+
+#include "drum/drift/driftDictionary.hpp"
+#include "drum/drift/porousSheetFit.hpp"
+#include "drum/drift/tableDrift.hpp"
+#include "drum/io/csvWriter.hpp"
+#include "drum/io/inputError.hpp"
+#include "drum/windTunnel/windTunnelData.hpp"
+#include "drum/windTunnel/windTunnelPrediction.hpp"
+
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <set>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+const char* usage =
+    "usage:\n"
+    "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE]\n"
+    "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
+    "               [-drag NAME] [-work DIR] [-keep]\n"
+    "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
+    "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
+    "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
+
+struct Args
+{
+    std::map<std::string, std::string> value;
+    std::set<std::string> flag;
+
+    bool has(const std::string& k) const { return value.count(k) || flag.count(k); }
+    std::string get(const std::string& k, const std::string& dflt = "") const
+    {
+        const auto it = value.find(k);
+        return it == value.end() ? dflt : it->second;
+    }
+    std::string need(const std::string& k) const
+    {
+        if (!value.count(k)) throw drum::InputError("", "-" + k, "missing option\n" + std::string(usage));
+        return value.at(k);
+    }
+};
+
+Args parse(int argc, char** argv)
+{
+    static const std::set<std::string> flags{"keep", "score", "help"};
+    static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png"};
+    Args a;
+    for (int i = 1; i < argc; ++i)
+    {
+        std::string k = argv[i];
+        if (k.size() < 2 || k[0] != '-') throw drum::InputError("", k, "unexpected argument\n" + std::string(usage));
+        k = k.substr(1);
+        if (flags.count(k)) { a.flag.insert(k); continue; }
+        if (!options.count(k)) throw drum::InputError("", "-" + k, "unknown option\n" + std::string(usage));
+        if (i + 1 >= argc) throw drum::InputError("", "-" + k, "needs a value");
+        a.value[k] = argv[++i];
+    }
+    return a;
+}
+
+fs::path defaultMaterials()
+{
+    const char* env = std::getenv("DRYER_DATA");
+    if (env) return fs::path(env)/"windtunnel_materials.csv";
+    return fs::path("..")/"shared"/"data"/"windtunnel_materials.csv";
+}
+
+int predict(const Args& a)
+{
+    const fs::path testsFile = a.need("tests"), out = a.need("out");
+    const std::string model = a.need("model");
+    const auto& names = drum::driftModelNames();
+    if (model != "cfd" && std::find(names.begin(), names.end(), model) == names.end())
+    {
+        std::string list;
+        for (const auto& n : names) list += n + ", ";
+        throw drum::InputError("", "-model", "unknown model '" + model + "': valid names are " + list + "cfd");
+    }
+    const fs::path matFile = a.get("materials", defaultMaterials().string());
+    const auto materials = drum::readWindTunnelMaterials(matFile);
+    const auto tests = drum::readWindTunnelTests(testsFile, materials);
+    // Sherritt's code and the reference predictions: air at 20 degC, Schiller-Naumann
+    const particleDrag::Gas air = particleDrag::Gas::air(20);
+
+    std::map<int, double> pred;
+    if (model == "cfd")
+    {
+        curtainDrift::CfdOptions o;
+        o.level = a.get("level", "coarse");
+        if (o.level != "coarse" && o.level != "medium" && o.level != "fine")
+        {
+            throw drum::InputError("", "-level", "'" + o.level + "': valid levels are coarse, medium, fine");
+        }
+        o.np = std::stoi(a.get("np", "1"));
+        o.drag = a.get("drag");
+        o.keep = a.has("keep");
+        o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());
+        pred = curtainDrift::cfdPredictions(tests, materials, o);
+        if (!o.keep) fs::remove_all(o.work);
+    }
+    else
+    {
+        drum::DriftSettings s;
+        s.model = model;
+        if (a.has("table")) s.table = a.get("table");
+        if (a.has("constants")) s.constants = a.get("constants");
+        s.outside = drum::parseOutOfRangePolicy(a.get("outside", "refuse"), "-outside");
+        const auto m = drum::makeDriftModel(s, air, {}, "-model");
+        for (const auto& t : tests)
+        {
+            try
+            {
+                pred[t.test] = drum::predictMeanAdvance(*m, t, materials.at(t.material));
+            }
+            catch (const drum::InputError& e)
+            {
+                throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
+            }
+        }
+        if (const auto* td = dynamic_cast<const drum::TableDrift*>(m.get()))
+        {
+            for (int ax = 0; ax < drum::driftAxisCount; ++ax)
+            {
+                if (td->table().clampCount(ax))
+                {
+                    std::cout << "curtainDrift: " << td->table().clampCount(ax) << " class queries clamped on "
+                              << drum::driftAxisName(ax) << "\n";
+                }
+            }
+        }
+    }
+    drum::CsvTable table({"test", "mean_advance_m"});
+    for (const auto& t : tests) table.addRow({double(t.test), pred.at(t.test)});
+    table.write(out);
+    std::cout << "curtainDrift: " << tests.size() << " predictions (" << model << ") written to " << out.string() << "\n";
+    return 0;
+}
+
+int fit(const Args& a)
+{
+    const std::string model = a.need("fit");
+    if (model != "porousSheet")
+    {
+        throw drum::InputError("", "-fit", "'" + model + "': the reduced models with constants are: porousSheet");
+    }
+    const fs::path tableFile = a.need("table"), out = a.need("out");
+    const drum::DriftTable table = drum::DriftTable::read(tableFile);
+    const particleDrag::Gas air = particleDrag::Gas::air(20);
+    drum::PorousSheetFit f = drum::fitPorousSheet(table, air);
+    f.constants.provenance["command"] = "curtainDrift -fit porousSheet -table " + tableFile.string() + " -out " + out.string();
+    drum::writePorousSheetConstants(out, f.constants);
+    std::cout << "curtainDrift: porousSheet a = " << f.constants.a << " 1/m, b = " << f.constants.b << " on "
+              << f.rows << " table rows, RMS ln residual " << f.rmsLn << (f.converged ? "" : " (NOT converged)")
+              << "; written to " << out.string() << "\n";
+    return f.converged ? 0 : 2;
+}
+
+int score(const Args& a)
+{
+    std::vector<curtainDrift::NamedPredictions> preds;
+    std::string list = a.need("predictions");
+    std::size_t pos = 0;
+    while (pos <= list.size())
+    {
+        const auto comma = list.find(',', pos);
+        const std::string item = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        const auto eq = item.find('=');
+        if (eq == std::string::npos || eq == 0)
+        {
+            throw drum::InputError("", "-predictions", "'" + item + "' is not NAME=FILE");
+        }
+        preds.push_back({item.substr(0, eq), item.substr(eq + 1)});
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    curtainDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"));
+    return 0;
+}
+
+} // namespace
+
+
+int main(int argc, char** argv)
+{
+    try
+    {
+        const Args a = parse(argc, argv);
+        if (a.has("help") || argc == 1)
+        {
+            std::cout << usage;
+            return argc == 1 ? 1 : 0;
+        }
+        if (a.has("fit")) return fit(a);
+        if (a.has("score")) return score(a);
+        return predict(a);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "curtainDrift: error: " << e.what() << std::endl;
+        return 1;
+    }
+}

@@ -1,0 +1,111 @@
+#include "driftScores.hpp"
+
+#include "drum/io/atomicFile.hpp"
+#include "drum/io/csv.hpp"
+#include "drum/io/gnuplot.hpp"
+#include "drum/io/inputError.hpp"
+#include "drum/windTunnel/predictionScore.hpp"
+#include "drum/windTunnel/windTunnelData.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+namespace curtainDrift
+{
+
+namespace fs = std::filesystem;
+
+void writeScores
+(
+    const fs::path& testsFile,
+    const std::vector<NamedPredictions>& predictions,
+    const fs::path& csv,
+    const fs::path& png
+)
+{
+    const auto measured = drum::readMeasuredAdvance(testsFile);
+    // fall height per test: the scoring side may read the whole file
+    std::map<int, double> height;
+    {
+        // read test,fall_height_m without the material check
+        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(testsFile.string());
+        in.read_header(io::ignore_extra_column, "test", "fall_height_m");
+        int t;
+        double y;
+        while (in.read_row(t, y)) height[t] = y;
+    }
+    std::set<double> heights;
+    for (const auto& kv : height) heights.insert(kv.second);
+
+    std::ostringstream os;
+    os << "model,fall_height_m,count,rms_ln,bias_ln,within25\n" << std::setprecision(4);
+    drum::Plot plot;
+    plot.title = "Mean advance, predicted against measured (Sherritt 1991 wind tunnel)";
+    plot.xlabel = "measured mean advance [m]";
+    plot.ylabel = "predicted mean advance [m]";
+    plot.logx = plot.logy = true;
+    plot.extra.push_back("set key top left");
+    const std::vector<std::string> points{"7", "5", "9", "11", "13", "3", "1"};
+    double lo = 1e9, hi = 0;
+    std::cout << std::left << std::setw(14) << "model" << std::setw(8) << "y [m]" << std::setw(6) << "n"
+              << std::setw(9) << "RMS ln" << std::setw(9) << "bias" << "within 25 %\n";
+    for (std::size_t k = 0; k < predictions.size(); ++k)
+    {
+        const auto& p = predictions[k];
+        const auto pred = drum::readMeasuredAdvance(p.file);   // same columns: test,mean_advance_m
+        if (pred.empty()) throw drum::InputError(p.file.string(), "", "no predictions");
+        auto line = [&](const std::string& label, const std::map<int, double>& sub)
+        {
+            const drum::PredictionScore s = drum::scorePredictions(sub, measured);
+            os << p.model << ',' << label << ',' << s.count << ',' << s.rmsLnError << ',' << s.bias << ','
+               << s.within25 << '\n';
+            std::cout << std::setw(14) << p.model << std::setw(8) << label << std::setw(6) << s.count
+                      << std::fixed << std::setprecision(3) << std::setw(9) << s.rmsLnError << std::setw(9)
+                      << s.bias << s.within25 << std::defaultfloat << std::setprecision(6) << "\n";
+        };
+        for (double y : heights)
+        {
+            std::map<int, double> sub;
+            for (const auto& kv : pred)
+            {
+                if (height.count(kv.first) && height.at(kv.first) == y) sub.insert(kv);
+            }
+            std::ostringstream yl;
+            yl << y;
+            if (!sub.empty()) line(yl.str(), sub);
+        }
+        line("all", pred);
+        drum::PlotSeries s{p.model, {}, {}, "points pt " + points[k % points.size()] + " ps 1.3"};
+        for (const auto& kv : pred)
+        {
+            if (!measured.count(kv.first)) continue;
+            s.x.push_back(measured.at(kv.first));
+            s.y.push_back(kv.second);
+            lo = std::min({lo, s.x.back(), s.y.back()});
+            hi = std::max({hi, s.x.back(), s.y.back()});
+        }
+        plot.series.push_back(s);
+    }
+    drum::writeFileAtomically(csv, os.str());
+    if (!png.empty())
+    {
+        lo = std::max(lo*0.8, 1e-3);
+        hi *= 1.25;
+        for (const auto& [title, f] : std::vector<std::pair<std::string, double>>{{"1:1", 1.0}, {"+-25 %", 1.25}, {"", 0.75}})
+        {
+            drum::PlotSeries s{title, {lo, hi}, {f*lo, f*hi}, f == 1.0 ? "lines lc 'black' lw 1" : "lines lc 'gray' dt 2"};
+            if (title.empty()) s.title = "";
+            plot.series.push_back(s);
+        }
+        std::ostringstream r;
+        r << "set xrange [" << lo << ":" << hi << "]; set yrange [" << lo << ":" << hi << "]";
+        plot.extra.push_back(r.str());
+        if (drum::gnuplotAvailable()) drum::writePng(plot, png);
+        else std::cout << "gnuplot not on PATH: " << png << " not drawn\n";
+    }
+}
+
+} // namespace curtainDrift

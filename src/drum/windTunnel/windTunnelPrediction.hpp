@@ -1,0 +1,22 @@
+// A drift model's prediction of a wind-tunnel test's bulk mean advance: the
+// mass-weighted mean over the material's size classes (geometric-mean
+// diameters, open bins closed as in the shared/data README section 1), the
+// way the reference predictions and tests/unit/windTunnel score them.
+#ifndef DRUM_WINDTUNNEL_WINDTUNNELPREDICTION_HPP
+#define DRUM_WINDTUNNEL_WINDTUNNELPREDICTION_HPP
+
+#include "drum/drift/driftModel.hpp"
+#include "drum/windTunnel/windTunnelData.hpp"
+
+namespace drum
+{
+
+//- The drift query of one size class of a test (level duct, incline 0)
+DriftQuery windTunnelQuery(const WindTunnelTest& t, const WindTunnelMaterial& m, const SieveClass& c);
+
+//- sum_i x_i delta_i over the classes (x_i renormalised mass fractions)
+double predictMeanAdvance(const DriftModel& model, const WindTunnelTest& t, const WindTunnelMaterial& m);
+
+} // namespace drum
+
+#endif
