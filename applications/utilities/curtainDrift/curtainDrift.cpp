@@ -15,6 +15,7 @@
 #include "driftScores.hpp"
 
 #include "drum/drift/driftDictionary.hpp"
+#include "drum/drift/porousSheetDrift.hpp"
 #include "drum/drift/porousSheetFit.hpp"
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/csvWriter.hpp"
@@ -126,27 +127,44 @@ int predict(const Args& a)
         if (a.has("table")) s.table = a.get("table");
         if (a.has("constants")) s.constants = a.get("constants");
         s.outside = drum::parseOutOfRangePolicy(a.get("outside", "refuse"), "-outside");
-        const auto m = drum::makeDriftModel(s, air, {}, "-model");
+        // One model per material: the porousSheet curtain is the material's PSD
+        std::map<std::string, std::shared_ptr<const drum::DriftModel>> models;
+        for (const auto& [name, mat] : materials)
+        {
+            std::vector<double> d, x;
+            for (const auto& c : mat.classes)
+            {
+                d.push_back(c.diameter);
+                x.push_back(c.massFraction);
+            }
+            s.curtainDiameter = drum::sauterDiameter(d, x);
+            if (!models.empty() && model != "porousSheet")
+            {
+                models[name] = models.begin()->second;   // one table read, one clamp count
+                continue;
+            }
+            models[name] = drum::makeDriftModel(s, air, {}, "-model");
+        }
         for (const auto& t : tests)
         {
             try
             {
-                pred[t.test] = drum::predictMeanAdvance(*m, t, materials.at(t.material));
+                pred[t.test] = drum::predictMeanAdvance(*models.at(t.material), t, materials.at(t.material));
             }
             catch (const drum::InputError& e)
             {
                 throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
             }
         }
-        if (const auto* td = dynamic_cast<const drum::TableDrift*>(m.get()))
+        const drum::DriftTable* table = nullptr;
+        if (const auto* td = dynamic_cast<const drum::TableDrift*>(models.begin()->second.get())) table = &td->table();
+        if (const auto* tv = dynamic_cast<const drum::TableVcDrift*>(models.begin()->second.get())) table = &tv->table();
+        for (int ax = 0; table && ax < drum::driftAxisCount; ++ax)
         {
-            for (int ax = 0; ax < drum::driftAxisCount; ++ax)
+            if (table->clampCount(ax))
             {
-                if (td->table().clampCount(ax))
-                {
-                    std::cout << "curtainDrift: " << td->table().clampCount(ax) << " class queries clamped on "
-                              << drum::driftAxisName(ax) << "\n";
-                }
+                std::cout << "curtainDrift: " << table->clampCount(ax) << " class queries clamped on "
+                          << drum::driftAxisName(ax) << "\n";
             }
         }
     }

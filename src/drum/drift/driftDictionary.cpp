@@ -122,7 +122,7 @@ std::shared_ptr<const DriftModel> makeDriftModel
     if (s.model == "porousSheet")
     {
         const auto file = s.constants.empty() ? defaultPorousSheetConstantsFile() : s.constants;
-        return std::make_shared<PorousSheetDrift>(readPorousSheetConstants(file), gas, law);
+        return std::make_shared<PorousSheetDrift>(readPorousSheetConstants(file), gas, law, s.curtainDiameter);
     }
     throw InputError("", entry, "unknown drift model '" + s.model + "': valid names are " + nameList());
 }

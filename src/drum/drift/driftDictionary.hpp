@@ -33,6 +33,9 @@ struct DriftSettings
     OutOfRangePolicy outside = OutOfRangePolicy::refuse;
     std::filesystem::path constants;   //!< empty: defaultPorousSheetConstantsFile()
     std::function<void(const std::string&)> warn;  //!< clamp warnings; null: std::cerr
+    //- porousSheet: surface-mean diameter of the curtain's solids (set by
+    //  the caller from the material, sauterDiameter()); 0: each class alone
+    double curtainDiameter = 0;
 };
 
 //- Every drift-model name makeDriftModel knows

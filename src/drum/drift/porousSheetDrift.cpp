@@ -107,11 +107,14 @@ double porousSheetDragNumber(const DriftQuery& q, const particleDrag::Gas& gas, 
 }
 
 
-PorousSheetDrift::PorousSheetDrift(PorousSheetConstants c, particleDrag::Gas gas, particleDrag::DragLaw law)
+PorousSheetDrift::PorousSheetDrift(PorousSheetConstants c, particleDrag::Gas gas, particleDrag::DragLaw law,
+                                   double curtainDiameter)
 :
     IsolatedParticleDrift(gas, law),
-    c_(std::move(c))
+    c_(std::move(c)),
+    curtainDiameter_(curtainDiameter)
 {
+    if (!(curtainDiameter_ >= 0)) throw InputError("", "porousSheet curtain diameter", "must be >= 0 m");
     requirePositive(c_.a, "porousSheet a_per_m");
     requirePositive(c_.b, "porousSheet b");
 }
@@ -119,7 +122,25 @@ PorousSheetDrift::PorousSheetDrift(PorousSheetConstants c, particleDrag::Gas gas
 
 double PorousSheetDrift::dragNumber(const DriftQuery& q) const
 {
-    return porousSheetDragNumber(q, gas_, law_);
+    DriftQuery curtain = q;
+    if (curtainDiameter_ > 0) curtain.particleDiameter = curtainDiameter_;
+    return porousSheetDragNumber(curtain, gas_, law_);
+}
+
+
+double sauterDiameter(const std::vector<double>& d, const std::vector<double>& x)
+{
+    if (d.size() != x.size() || d.empty()) throw InputError("", "size classes", "need one fraction per diameter");
+    double sx = 0, s = 0;
+    for (std::size_t i = 0; i < d.size(); ++i)
+    {
+        requirePositive(d[i], "size class diameter");
+        if (!(x[i] >= 0)) throw InputError("", "size class fraction", "must be >= 0");
+        sx += x[i];
+        s += x[i]/d[i];
+    }
+    if (!(sx > 0)) throw InputError("", "size class fraction", "must not all be zero");
+    return sx/s;
 }
 
 

@@ -20,8 +20,11 @@
 // The drift is then the shared core's lone-particle fall at V_c.
 // Limits: dilute (S -> 0) V_c -> V_g, the isolated particle; dense (N >> 1/a)
 // V_c/V_g ~ (aN)^-b -> 0, strong shielding.
-// The query's own class size sets K (a curtain of that class): the mixture of
-// a polydisperse curtain is not represented.
+// The shielding is a property of the whole curtain, so K is evaluated at the
+// curtain's surface-mean (Sauter) diameter d32 = 1/sum(x_i/d_i) of its size
+// distribution when one is given (curtainDiameter > 0), and at the query's
+// class diameter otherwise; the drift of each class is its own lone-particle
+// fall at the common V_c.
 #ifndef DRUM_DRIFT_POROUSSHEETDRIFT_HPP
 #define DRUM_DRIFT_POROUSSHEETDRIFT_HPP
 
@@ -30,6 +33,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace drum
 {
@@ -54,7 +58,8 @@ std::filesystem::path defaultPorousSheetConstantsFile();
 class PorousSheetDrift : public IsolatedParticleDrift
 {
 public:
-    PorousSheetDrift(PorousSheetConstants c, particleDrag::Gas gas, particleDrag::DragLaw law = {});
+    PorousSheetDrift(PorousSheetConstants c, particleDrag::Gas gas, particleDrag::DragLaw law = {},
+                     double curtainDiameter = 0);
 
     //- Curtain drag number N [m] of the query
     double dragNumber(const DriftQuery& q) const;
@@ -69,7 +74,11 @@ public:
 
 private:
     PorousSheetConstants c_;
+    double curtainDiameter_;
 };
+
+//- Surface-mean diameter 1/sum(x_i/d_i) (fractions renormalised)
+double sauterDiameter(const std::vector<double>& diameters, const std::vector<double>& fractions);
 
 //- N of a query without constants (used by the fit)
 double porousSheetDragNumber(const DriftQuery& q, const particleDrag::Gas& gas, const particleDrag::DragLaw& law);

@@ -30,6 +30,29 @@ struct LnResidual
 
 PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& gas, const particleDrag::DragLaw& law)
 {
+    // The curtain of every table case: the sweep's class mass fractions over
+    // the diameter nodes (header "fixed: ... class_mass_fractions=w1,w2,...")
+    double d32 = 0;
+    if (table.header().count("fixed"))
+    {
+        std::istringstream is(table.header().at("fixed"));
+        std::string item;
+        while (is >> item)
+        {
+            if (item.rfind("class_mass_fractions=", 0) != 0) continue;
+            std::vector<double> w;
+            std::istringstream ws(item.substr(21));
+            std::string v;
+            while (std::getline(ws, v, ',')) w.push_back(std::stod(v));
+            const auto& d = table.nodes(diameterAxis);
+            if (w.size() != d.size())
+            {
+                throw InputError(table.file().string(), "header fixed class_mass_fractions",
+                    "needs one fraction per diameter node (" + std::to_string(d.size()) + ")");
+            }
+            d32 = sauterDiameter(d, w);
+        }
+    }
     std::vector<LnResidual> data;
     for (const auto& row : table.rows())
     {
@@ -41,6 +64,7 @@ PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& 
         q.particleDensity = row.x[densityAxis];
         q.particleDiameter = row.x[diameterAxis];
         if (!(q.gasVelocity > 0 && q.fallHeight > 0 && q.spillRate > 0 && row.v.vcOverVg > 0)) continue;
+        if (d32 > 0) q.particleDiameter = d32;
         data.push_back({porousSheetDragNumber(q, gas, law), std::log(row.v.vcOverVg)});
     }
     if (data.size() < 3)
@@ -91,6 +115,8 @@ PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& 
         if (table.header().count(key)) pv[std::string("table_") + key] = table.header().at(key);
     }
     pv["rows"] = std::to_string(fit.rows);
+    pv["curtainDiameter"] = d32 > 0 ? "table Sauter diameter " + std::to_string(d32) + " m"
+                                    : "per class (no class_mass_fractions in the table header)";
     std::ostringstream os;
     os.precision(4);
     os << fit.rmsLn;

@@ -32,6 +32,7 @@ public:
     TableVcDrift(std::shared_ptr<const DriftTable> table, particleDrag::Gas gas, particleDrag::DragLaw law = {});
     double displacement(const DriftQuery& q) const override;
     std::string name() const override { return "tableVc"; }
+    const DriftTable& table() const { return *table_; }
 
 private:
     std::shared_ptr<const DriftTable> table_;
