@@ -1,5 +1,6 @@
 #include "drumDict.hpp"
 
+#include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -210,7 +211,13 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     d.designLoadMultiplier = r.number(mo, "model", "designLoadMultiplier", 0, 100, 1.0, true);
     d.stagnantRatio = r.number(mo, "model", "stagnantRatio", 0, 10, 0.0);
     d.exchangeTime = r.number(mo, "model", "exchangeTime", 1, 1e6, 600.0);
-    d.drift = r.word(mo, "model", "drift", {"isolated", "sherritt"}, std::string("sherritt"));
+    d.driftSettings = drum::readDriftSettings(root, r.file, caseDir);   // model.drift + drift section
+    d.drift = d.driftSettings.model;
+    {
+        std::vector<double> dp;
+        for (double s : d.sizes) dp.push_back(s*d.sphericity);
+        d.driftSettings.curtainDiameter = drum::sauterDiameter(dp, d.fractions);
+    }
 
     const YAML::Node rt = r.section(root, "rtd", false);
     const YAML::Node rr = rt ? rt : YAML::Node(YAML::NodeType::Map);

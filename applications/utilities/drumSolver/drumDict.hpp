@@ -3,6 +3,7 @@
 #ifndef DRUMSOLVER_DRUMDICT_HPP
 #define DRUMSOLVER_DRUMDICT_HPP
 
+#include "drum/drift/driftDictionary.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 
 #include <filesystem>
@@ -46,7 +47,8 @@ struct DrumDict
     std::string partition;      //!< leeCorrelations | flightModel
     double kilnTime, backFraction, dragFactor, designLoadMultiplier;
     double stagnantRatio, exchangeTime;   //!< stagnant-zone extension
-    std::string drift;          //!< twoPhase: isolated | sherritt
+    std::string drift;          //!< isolated | sherritt | table | tableVc | porousSheet
+    drum::DriftSettings driftSettings;   //!< model.drift + drift section (table, outside, constants)
     // rtd
     drum::RtdOptions rtd;
     std::optional<TracerFile> tracer;

@@ -127,7 +127,7 @@ void runCompartmentWith
     {
         const particleDrag::Gas air = particleDrag::Gas::air(d.gasTemperatureC);
         drum::FlightModelPartition fp;
-        fp.drift = drum::makeDriftModel(d.drift, air, {}, "model.drift");
+        fp.drift = drum::makeDriftModel(d.driftSettings, air, {}, "model.drift");
         // Mean gas velocity over the free cross-section (holdup neglected)
         fp.gasVelocity = d.gasMassRate/(air.density*pi*d.diameter*d.diameter/4);
         fp.counterCurrent = d.counterCurrent;
@@ -391,7 +391,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     c.gas.massRate = d.gasMassRate;
     c.gas.temperatureC = d.gasTemperatureC;
     c.gas.direction = d.counterCurrent ? drum::GasFlow::countercurrent : drum::GasFlow::cocurrent;
-    c.options.drift = drum::makeDriftModel(d.drift, particleDrag::Gas::air(d.gasTemperatureC), {}, "model.drift");
+    c.options.drift = drum::makeDriftModel(d.driftSettings, particleDrag::Gas::air(d.gasTemperatureC), {}, "model.drift");
     say("two-phase model (Sherritt 1991), axial solve");
     const drum::TwoPhaseModel model(c);
     const drum::TwoPhaseResult r = model.solveAxial(d.feedRate);
