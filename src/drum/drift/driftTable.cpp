@@ -335,9 +335,7 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
         n *= t.axes_[a].size();
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    t.vc_.assign(n, nan);
-    t.drift_.assign(n, nan);
-    t.captured_.assign(n, nan);
+    t.values_.assign(3*n, nan);
     std::vector<int> seenAt(n, 0);
     for (const auto& r : raw)
     {
@@ -355,9 +353,7 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
                 + std::to_string(seenAt[idx]) + "): each combination of the axes must appear once");
         }
         seenAt[idx] = r.line;
-        t.vc_[idx] = r.v[0];
-        t.drift_[idx] = r.v[1];
-        t.captured_[idx] = r.v[2];
+        for (int v = 0; v < 3; ++v) t.values_[3*idx + v] = r.v[v];
     }
     if (raw.size() != n)
     {
@@ -436,33 +432,26 @@ void DriftTable::locate(int a, double x, int& i, double& w, bool anchorBelow) co
 
 namespace
 {
-struct Corner { std::size_t base; int n; std::array<std::size_t, driftAxisCount> step; std::array<double, driftAxisCount> w; };
-}
-
-
-template<class F>
-static void forCorners(const Corner& c, F f)
+// Corners of the cell over the axes with a neighbour: the tensor-product
+// weights and offsets are built by doubling (2 + 4 + ... + 2^n products)
+struct Corners
 {
-    // 2^n corners of the cell over the axes with a neighbour
-    for (unsigned m = 0; m < (1u << c.n); ++m)
+    std::array<double, 1u << driftAxisCount> w;
+    std::array<std::size_t, 1u << driftAxisCount> off;
+    unsigned n = 1;
+
+    void add(double t, std::size_t step)
     {
-        double weight = 1;
-        std::size_t idx = c.base;
-        for (int j = 0; j < c.n; ++j)
+        for (unsigned k = 0; k < n; ++k)
         {
-            if (m & (1u << j))
-            {
-                weight *= c.w[j];
-                idx += c.step[j];
-            }
-            else
-            {
-                weight *= 1 - c.w[j];
-            }
+            w[n + k] = w[k]*t;
+            off[n + k] = off[k] + step;
+            w[k] *= 1 - t;
         }
-        if (weight != 0) f(idx, weight);
+        n *= 2;
     }
-}
+};
+} // namespace
 
 
 DriftTableValue DriftTable::lookup(const DriftQuery& q) const
@@ -483,6 +472,19 @@ double DriftTable::vcOverVg(const DriftQuery& q) const
 }
 
 
+void DriftTable::missingPoint(std::size_t idx) const
+{
+    std::ostringstream os;
+    os << "the query needs grid point";
+    for (int a = 0; a < driftAxisCount; ++a)
+    {
+        os << ' ' << driftAxisName(a) << '=' << fmt(axes_[a][(idx/stride_[a]) % axes_[a].size()]);
+    }
+    os << ", which the table lists as missing (failed case)";
+    throw InputError(file_.string(), "missing", os.str());
+}
+
+
 DriftTableValue DriftTable::evaluate(const DriftQuery& q, bool anchor) const
 {
     const std::array<double, driftAxisCount> x{{q.gasVelocity, q.spillRate, q.fallHeight,
@@ -493,40 +495,30 @@ DriftTableValue DriftTable::evaluate(const DriftQuery& q, bool anchor) const
     {
         throw InputError(file_.string(), driftAxisName(fallHeightAxis), "query fall height must be >= 0");
     }
-    Corner c;
-    c.base = 0;
-    c.n = 0;
+    Corners c;
+    c.w[0] = 1;
+    c.off[0] = 0;
+    std::size_t base = 0;
     for (int a = 0; a < driftAxisCount; ++a)
     {
         int i;
         double w;
         locate(a, anchored && a == fallHeightAxis ? y0 : x[a], i, w, anchor && a == fallHeightAxis);
-        c.base += std::size_t(i)*stride_[a];
-        if (axes_[a].size() > 1)
-        {
-            c.step[c.n] = stride_[a];
-            c.w[c.n] = w;
-            ++c.n;
-        }
+        base += std::size_t(i)*stride_[a];
+        if (axes_[a].size() > 1) c.add(w, stride_[a]);
     }
     DriftTableValue v;
-    forCorners(c, [&](std::size_t idx, double w)
+    for (unsigned k = 0; k < c.n; ++k)
     {
-        if (std::isnan(vc_[idx]))
-        {
-            std::ostringstream os;
-            os << "the query needs grid point";
-            for (int a = 0; a < driftAxisCount; ++a)
-            {
-                os << ' ' << driftAxisName(a) << '=' << fmt(axes_[a][(idx/stride_[a]) % axes_[a].size()]);
-            }
-            os << ", which the table lists as missing (failed case)";
-            throw InputError(file_.string(), "missing", os.str());
-        }
-        v.vcOverVg += w*vc_[idx];
-        v.drift += w*drift_[idx];
-        v.capturedFraction += w*captured_[idx];
-    });
+        const double w = c.w[k];
+        if (w == 0) continue;
+        const std::size_t idx = base + c.off[k];
+        const double* val = &values_[3*idx];
+        if (std::isnan(val[0])) missingPoint(idx);
+        v.vcOverVg += w*val[0];
+        v.drift += w*val[1];
+        v.capturedFraction += w*val[2];
+    }
     if (anchored)
     {
         v.drift *= q.fallHeight/y0;   // exact anchor: no drift without a fall
@@ -538,15 +530,15 @@ DriftTableValue DriftTable::evaluate(const DriftQuery& q, bool anchor) const
 std::vector<DriftTable::Row> DriftTable::rows() const
 {
     std::vector<Row> out;
-    for (std::size_t idx = 0; idx < vc_.size(); ++idx)
+    for (std::size_t idx = 0; idx < size(); ++idx)
     {
-        if (std::isnan(vc_[idx])) continue;
+        if (std::isnan(values_[3*idx])) continue;
         Row r;
         for (int a = 0; a < driftAxisCount; ++a)
         {
             r.x[a] = axes_[a][(idx/stride_[a]) % axes_[a].size()];
         }
-        r.v = {vc_[idx], drift_[idx], captured_[idx]};
+        r.v = {values_[3*idx], values_[3*idx + 1], values_[3*idx + 2]};
         out.push_back(r);
     }
     return out;

@@ -106,7 +106,7 @@ public:
     long clampCount(int axis) const { return counters_->count[axis].load(); }
 
     //- Number of data rows (grid points)
-    std::size_t size() const { return vc_.size(); }
+    std::size_t size() const { return values_.size()/3; }
 
     //- Every grid point: axis values and the three tabulated values (for
     //  fitting reduced models to the table)
@@ -121,6 +121,7 @@ private:
     };
 
     DriftTableValue evaluate(const DriftQuery& q, bool anchorFallHeight) const;
+    [[noreturn]] void missingPoint(std::size_t idx) const;
 
     // Cell of axis a holding x: lower index and weight; handles policy
     void locate(int axis, double x, int& i, double& w, bool anchorBelow) const;
@@ -131,7 +132,7 @@ private:
     std::array<std::vector<double>, driftAxisCount> axes_;
     std::array<std::vector<double>, driftAxisCount> coord_;  // scaled nodes
     std::array<std::size_t, driftAxisCount> stride_{};
-    std::vector<double> vc_, drift_, captured_;   // NaN: grid point missing
+    std::vector<double> values_;   // (vc, drift, captured) per grid point; NaN: missing
     std::shared_ptr<Counters> counters_ = std::make_shared<Counters>();
 };
 
