@@ -1,0 +1,263 @@
+// curtainDrift end to end: every model on the shared wind-tunnel tests
+// (isolated and Sherritt against the shared reference predictions, tableVc
+// with a uniform V_c/V_g against them too, cfd through a stand-in
+// curtainCase), the score mode against the data README's RMS values, and bad
+// input: clear errors, no output file, an existing output left untouched.
+#include "drum/io/csv.hpp"
+#include "drum/windTunnel/windTunnelData.hpp"
+#include "particleDrag/loneParticleFall.hpp"
+#include "syntheticTable.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+
+const fs::path data = std::getenv("DRYER_DATA") ? std::getenv("DRYER_DATA") : DRYER_DATA_DIR;
+
+fs::path dir()
+{
+    const fs::path d = fs::temp_directory_path()/("curtainDriftCli_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+struct CliRun { int rc; std::string out; };
+
+CliRun run(const std::string& args, const std::string& env = "")
+{
+    const fs::path log = dir()/"log.txt";
+    const std::string cmd = "DRYER_DATA=" + data.string() + " " + env + " " + CURTAINDRIFT + std::string(" ") + args + " > " + log.string() + " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    std::ifstream in(log);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return {rc, ss.str()};
+}
+
+std::map<int, double> readPred(const fs::path& f)
+{
+    std::map<int, double> m;
+    io::CSVReader<2> in(f.string());
+    in.read_header(io::ignore_no_column, "test", "mean_advance_m");
+    int t;
+    double v;
+    while (in.read_row(t, v)) m[t] = v;
+    return m;
+}
+
+std::map<int, std::pair<double, double>> reference()
+{
+    std::map<int, std::pair<double, double>> m;
+    io::CSVReader<3> in((data/"windtunnel_reference_predictions.csv").string());
+    in.read_header(io::ignore_extra_column, "test", "pred_a_m", "pred_b_m");
+    int t;
+    double a, b;
+    while (in.read_row(t, a, b)) m[t] = {a, b};
+    return m;
+}
+
+std::string text(const fs::path& f)
+{
+    std::ifstream in(f);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// A table covering the wind tunnel with a uniform V_c/V_g = r
+fs::path uniformTable(double r)
+{
+    std::array<std::vector<double>, 6> g{{{1, 9}, {5, 45}, {3, 11}, {0.9, 2.1}, {1100, 2700}, {40e-6, 4e-3}}};
+    const fs::path f = dir()/("uniform" + std::to_string(r) + ".csv");
+    const particleDrag::Gas air = particleDrag::Gas::air(20);
+    synthetic::write(f, synthetic::table(g, [&](const synthetic::Point& p) -> synthetic::Values
+    {
+        return {r, particleDrag::loneParticleAdvance({}, {p[5], p[4]}, air, r*p[0], p[2]), 1.0};
+    }));
+    return f;
+}
+
+const std::string tests = (data/"windtunnel_tests.csv").string();
+
+} // namespace
+
+
+TEST(CurtainDriftCli, IsolatedAndSherrittReproduceTheSharedReferencePredictions)
+{
+    const auto ref = reference();
+    for (const char* model : {"isolated", "sherritt"})
+    {
+        const fs::path out = dir()/(std::string(model) + ".csv");
+        const CliRun r = run("-tests " + tests + " -out " + out.string() + " -model " + model);
+        ASSERT_EQ(r.rc, 0) << r.out;
+        const auto p = readPred(out);
+        ASSERT_EQ(p.size(), 69u);
+        for (const auto& [t, v] : p)
+        {
+            const double e = std::string(model) == "isolated" ? ref.at(t).first : ref.at(t).second;
+            EXPECT_NEAR(v, e, 2e-4) << model << " test " << t;
+        }
+    }
+}
+
+
+TEST(CurtainDriftCli, TableVcWithUniformRatioIsTheLoneParticleAtThatVelocity)
+{
+    const auto ref = reference();
+    const fs::path out = dir()/"tableVc.csv";
+    CliRun r = run("-tests " + tests + " -out " + out.string() + " -model tableVc -table " + uniformTable(1.0).string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    for (const auto& [t, v] : readPred(out)) EXPECT_NEAR(v, ref.at(t).first, 2e-4) << t;
+    // table model: drift interpolated, within the interpolation error of the lone particle
+    r = run("-tests " + tests + " -out " + out.string() + " -model table -table " + uniformTable(1.0).string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    for (const auto& [t, v] : readPred(out)) EXPECT_NEAR(v/ref.at(t).first, 1.0, 0.25) << t;
+}
+
+
+TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
+{
+    for (const char* model : {"isolated", "sherritt"})
+    {
+        ASSERT_EQ(run("-tests " + tests + " -out " + (dir()/(std::string(model) + ".csv")).string() + " -model " + model).rc, 0);
+    }
+    const fs::path csv = dir()/"scores.csv";
+    const CliRun r = run("-score -tests " + tests + " -predictions isolated=" + (dir()/"isolated.csv").string()
+                      + ",sherritt=" + (dir()/"sherritt.csv").string() + " -out " + csv.string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    io::CSVReader<4> in(csv.string());
+    in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
+    std::string m, y;
+    int n;
+    double rms;
+    std::map<std::string, double> overall;
+    int rowsPerHeight = 0;
+    while (in.read_row(m, y, n, rms))
+    {
+        if (y == "all") { overall[m] = rms; EXPECT_EQ(n, 69); }
+        else ++rowsPerHeight;
+    }
+    EXPECT_EQ(rowsPerHeight, 4);   // 6.6 and 10.3 m for two models
+    EXPECT_NEAR(overall.at("isolated"), 0.88, 0.005);   // shared/data README
+    EXPECT_NEAR(overall.at("sherritt"), 0.34, 0.005);
+}
+
+
+TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
+{
+    // Stand-in curtainCase: drift of a class = 1000 d (a function of its arguments)
+    const fs::path bin = dir()/"bin";
+    fs::create_directories(bin);
+    std::ofstream(bin/"curtainCase") <<
+        "#!/bin/sh\nwhile [ $# -gt 0 ]; do case $1 in -dir) D=$2;; -diameters) DS=$2;; -fractions) WS=$2;;"
+        " -heights) HS=$2;; -level) L=$2;; esac; shift; shift; done\n"
+        "[ \"$L\" = coarse ] || exit 3\nmkdir -p $D\n"
+        "echo class,diameter_m,mass_fraction,fall_height_m,drift_m,captured_fraction,vc_over_vg,gas_velocity_m_s,"
+        "cells,iterations,wall_time_s,converged > $D/curtainResult.csv\n"
+        "for h in $(echo $HS | tr , ' '); do i=0; for d in $(echo $DS | tr , ' '); do i=$((i+1));"
+        " echo $i,$d,0.1,$h,$(awk \"BEGIN{print 1000*$d}\"),1,0.5,1,100,10,1,1 >> $D/curtainResult.csv; done;"
+        " echo bulk,,,$h,0,1,0.5,1,100,10,1,1 >> $D/curtainResult.csv; done\n";
+    fs::permissions(bin/"curtainCase", fs::perms::owner_all);
+    // three rows of the shared tests, one per material
+    const fs::path few = dir()/"few.csv";
+    {
+        std::ifstream in(tests);
+        std::ofstream out(few);
+        std::string l;
+        std::getline(in, l);
+        out << l << "\n";
+        std::map<std::string, int> seen;
+        while (std::getline(in, l))
+        {
+            const std::string mat = l.substr(l.find(',') + 1, l.find(',', l.find(',') + 1) - l.find(',') - 1);
+            if (!seen[mat]++) out << l << "\n";
+        }
+    }
+    const fs::path out = dir()/"cfd.csv";
+    const std::string path = "PATH=" + bin.string() + ":$PATH";
+    const CliRun r = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -work " + (dir()/"work").string(), path);
+    ASSERT_EQ(r.rc, 0) << r.out;
+    EXPECT_NE(r.out.find("cfd 3/3"), std::string::npos) << r.out;
+    const auto materials = drum::readWindTunnelMaterials(data/"windtunnel_materials.csv");
+    const auto rows = drum::readWindTunnelTests(few, materials);
+    const auto p = readPred(out);
+    ASSERT_EQ(p.size(), 3u);
+    for (const auto& t : rows)
+    {
+        double e = 0;
+        for (const auto& c : materials.at(t.material).classes) e += c.massFraction*1000*c.diameter;
+        EXPECT_NEAR(p.at(t.test), e, 1e-6*e) << t.test;
+    }
+    EXPECT_FALSE(fs::exists(dir()/"work"));
+    // a failing case: error naming the test, no output
+    fs::remove(out);
+    const CliRun bad = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -level medium -work "
+                        + (dir()/"work2").string(), path);
+    EXPECT_NE(bad.rc, 0);
+    EXPECT_NE(bad.out.find("curtainCase failed"), std::string::npos) << bad.out;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+
+TEST(CurtainDriftCli, BadInputGivesClearErrorsAndNoOutput)
+{
+    const fs::path out = dir()/"keep.csv";
+    const auto expectFail = [&](const std::string& args, const std::string& needle)
+    {
+        std::ofstream(out) << "keep\n";
+        const CliRun r = run(args + " -out " + out.string());
+        EXPECT_NE(r.rc, 0) << args;
+        EXPECT_NE(r.out.find(needle), std::string::npos) << r.out;
+        EXPECT_EQ(text(out), "keep\n") << "output touched by a failed run: " << args;
+    };
+    const auto edited = [&](const std::string& name, const std::function<std::string(std::string)>& f)
+    {
+        const fs::path p = dir()/name;
+        std::ofstream(p) << f(text(tests));
+        return p.string();
+    };
+    expectFail("-tests " + tests + " -model magic", "valid names are isolated, sherritt, table, tableVc, porousSheet, cfd");
+    expectFail("-tests " + (dir()/"absent.csv").string() + " -model isolated", "not found");
+    expectFail("-tests " + edited("nocol.csv", [](std::string s) { return s.replace(s.find("air_velocity_m_s"), 3, "gas"); })
+               + " -model isolated", "air_velocity_m_s");
+    expectFail("-tests " + edited("nonnum.csv", [](std::string s) { return s.replace(s.find(",5.2,"), 5, ",x5,"); })
+               + " -model isolated", "line 2, column air_velocity_m_s");
+    expectFail("-tests " + edited("material.csv", [](std::string s) { return s.replace(s.find("raw_shale"), 9, "rawShale"); })
+               + " -model isolated", "unknown material 'rawShale'");
+    expectFail("-tests " + edited("range.csv", [](std::string s) { return s.replace(s.find(",5.2,"), 5, ",95,"); })
+               + " -model isolated", "test 11");
+    expectFail("-tests " + edited("cut.csv", [](std::string s) { return s.substr(0, s.size()/2) + "\n12,sand\n"; })
+               + " -model isolated", "");
+    const std::string table = uniformTable(0.8).string();
+    {
+        std::string t = text(table);
+        std::ofstream(dir()/"v2.csv") << std::string(t).replace(t.find("Table 1"), 7, "Table 2");
+        std::ofstream(dir()/"short.csv") << t.substr(0, t.size() - 30);
+    }
+    expectFail("-tests " + tests + " -model table -table " + (dir()/"v2.csv").string(), "version '2'");
+    expectFail("-tests " + tests + " -model tableVc -table " + (dir()/"short.csv").string(), "truncated");
+    expectFail("-tests " + tests + " -model table -table " + (dir()/"none.csv").string(), "not found");
+    expectFail("-tests " + tests + " -model table -table " + table + " -outside sometimes", "refuse, clamp");
+    // the open top bin (3.37 mm) is outside a table up to 2 mm: refused, or clamped on request
+    std::array<std::vector<double>, 6> g{{{1, 9}, {5, 45}, {3, 11}, {0.9, 2.1}, {1100, 2700}, {1e-4, 2e-3}}};
+    synthetic::write(dir()/"narrow.csv", synthetic::table(g, [](const synthetic::Point&) -> synthetic::Values { return {1, 1, 1}; }));
+    expectFail("-tests " + tests + " -model table -table " + (dir()/"narrow.csv").string(),
+               "particle_diameter_m = 0.00336583 is outside the table");
+    std::ofstream(out) << "keep\n";
+    const CliRun clamp = run("-tests " + tests + " -model table -outside clamp -table " + (dir()/"narrow.csv").string()
+                          + " -out " + out.string());
+    EXPECT_EQ(clamp.rc, 0) << clamp.out;
+    EXPECT_NE(clamp.out.find("warning"), std::string::npos);
+    EXPECT_NE(clamp.out.find("class queries clamped on particle_diameter_m"), std::string::npos) << clamp.out;
+    EXPECT_EQ(readPred(out).size(), 69u);
+}
