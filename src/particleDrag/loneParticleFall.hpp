@@ -62,8 +62,14 @@ struct FallIntegration
     //  drag-free fall of Eq 19 (false)
     bool verticalDrag = false;
 
-    //- Number of RK4 steps over the fall
+    //- Number of RK4 steps over the fall (refined automatically where the
+    //  drag is stiff, so that h lambda <= 0.5 with lambda the fastest rate
+    //  of the linearised drag)
     int steps = 4000;
+
+    //- Most steps the stiff-drag refinement may take; beyond it the call
+    //  throws (the particle follows the gas; see integrateFall)
+    long maxStiffSteps = 5000000;
 
     //- Downward speed at release [m/s], >= 0 (a curtain leaves its slot
     //  at the release velocity, not at rest); 0 is Sherritt's start
@@ -76,6 +82,7 @@ struct FallResult
     double advance = 0;       //!< axial displacement at the floor, m
     double time = 0;          //!< fall time, s
     double axialVelocity = 0; //!< V_x at the floor, m/s
+    long steps = 0;           //!< RK4 steps taken (> requested when stiff)
 };
 
 //- RK4 integration of Eq 12 (and optionally the vertical momentum balance

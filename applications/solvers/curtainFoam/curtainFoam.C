@@ -76,6 +76,7 @@ int main(int argc, char *argv[])
     while (runTime.run())
     {
         #include "readTimeControls.H"
+        #include "checkCourantLimits.H"
 
         if (LTS)
         {

@@ -146,3 +146,44 @@ TEST(LoneParticleFall, BadInputIsRefused)
         EXPECT_NE(std::string(e.what()).find("diameter"), std::string::npos);
     }
 }
+
+TEST(LoneParticleFall, StiffDragRefinesTheStepInsteadOfDiverging)
+{
+    // A 10 um sand grain relaxes to the gas in ~1e-3 s; in Stokes drag with
+    // K held constant is not the regime, so use the variable-Cd route: the
+    // requested 50 steps over a 1.45 s fall (h = 0.029 s, h lambda ~ 30)
+    // would make RK4 diverge. The step is refined automatically and the
+    // answer matches the Stokes closed form: with relaxation time tau the
+    // axial velocity is V_g (1 - exp(-t/tau)), so
+    //     x = V_g (t - tau (1 - exp(-t/tau))).
+    const DragLaw law = dragLawFromName("SchillerNaumann");
+    const Gas air = Gas::air(20.0);
+    const Particle p{10e-6, 2650};
+    FallIntegration opts;
+    opts.constantK = false;
+    opts.steps = 50;
+    const double Vg = 0.05;   // slip Re = 0.03: Stokes within 0.5 %
+    const FallResult r = integrateFall(law, p, air, Vg, 10.3, 0.0, opts);
+    EXPECT_GT(r.steps, 50) << "the step count must have been refined";
+    const double tau = p.density*p.diameter*p.diameter/(18*air.viscosity);
+    const double t = fallTime(10.3);
+    const double stokes = Vg*(t - tau*(1 - std::exp(-t/tau)));
+    ASSERT_TRUE(std::isfinite(r.advance));
+    EXPECT_NEAR(r.advance, stokes, 0.01*stokes);
+
+    // Finer still, the refinement would need more than maxStiffSteps: the
+    // call refuses with a message saying why, never a diverged number
+    FallIntegration capped = opts;
+    capped.maxStiffSteps = 1000;
+    try
+    {
+        integrateFall(law, p, air, Vg, 10.3, 0.0, capped);
+        FAIL() << "stiff fall beyond maxStiffSteps must throw";
+    }
+    catch (const std::runtime_error& e)
+    {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("stiff drag"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("follows the gas"), std::string::npos) << msg;
+    }
+}
