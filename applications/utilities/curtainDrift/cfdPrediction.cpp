@@ -61,7 +61,7 @@ double readCurtainResult
             {
                 d = std::stod(ds);
                 y = std::stod(ys);
-                dx = std::stod(dxs);
+                dx = dxs == "nan" || dxs == "NaN" ? std::nan("") : std::stod(dxs);
             }
             catch (const std::exception&)
             {
@@ -74,7 +74,13 @@ double readCurtainResult
             }
             for (std::size_t i = 0; i < diameters.size(); ++i)
             {
-                if (std::abs(d - diameters[i]) <= 1e-6*diameters[i]) drift[i] = dx;
+                if (std::abs(d - diameters[i]) > 1e-4*diameters[i]) continue;   // as printed by curtainCase
+                if (!std::isfinite(dx))
+                {
+                    throw InputError(f, where, "class " + cls + " (diameter " + ds + " m) did not reach the fall "
+                        "height inside the domain (drift_m " + dxs + "): no mean advance for this row");
+                }
+                drift[i] = dx;
             }
         }
     }

@@ -48,6 +48,7 @@ void writeScores
     plot.ylabel = "predicted mean advance [m]";
     plot.logx = plot.logy = true;
     plot.extra.push_back("set key top left");
+    plot.extra.push_back("set clip two");   // draw the +-25 % lines whose ends lie on the frame
     const std::vector<std::string> points{"7", "5", "9", "11", "13", "3", "1"};
     double lo = 1e9, hi = 0;
     std::cout << std::left << std::setw(14) << "model" << std::setw(8) << "y [m]" << std::setw(6) << "n"
@@ -94,12 +95,9 @@ void writeScores
     {
         lo = std::max(lo*0.8, 1e-3);
         hi *= 1.25;
-        for (const auto& [title, f] : std::vector<std::pair<std::string, double>>{{"1:1", 1.0}, {"+-25 %", 1.25}, {"", 0.75}})
-        {
-            drum::PlotSeries s{title, {lo, hi}, {f*lo, f*hi}, f == 1.0 ? "lines lc 'black' lw 1" : "lines lc 'gray' dt 2"};
-            if (title.empty()) s.title = "";
-            plot.series.push_back(s);
-        }
+        plot.series.push_back({"1:1", {lo, hi}, {lo, hi}, "lines lc 'black' lw 1"});
+        plot.series.push_back({"+25 %", {lo, hi}, {1.25*lo, 1.25*hi}, "lines lc 'gray40' dt 2 lw 1.5"});
+        plot.series.push_back({"-25 %", {lo, hi}, {0.75*lo, 0.75*hi}, "lines lc 'gray40' dt 4 lw 1.5"});
         std::ostringstream r;
         r << "set xrange [" << lo << ":" << hi << "]; set yrange [" << lo << ":" << hi << "]";
         plot.extra.push_back(r.str());
