@@ -199,3 +199,35 @@ TEST(DriftDictionary, ReadsModelTableAndPolicy)
     EXPECT_THROW(read("model: {drift: table}\ndrift: {outside: sometimes}\n"), InputError);
     EXPECT_THROW(read("model: {drift: table}\ndrift: {tabel: dict.csv}\n"), InputError);
 }
+
+
+TEST(PorousSheet, FitUsesTheCurtainSauterDiameterFromTheTableHeader)
+{
+    // A table from a curtain of the three diameter nodes in given shares: one
+    // V_c/V_g for all classes of a case, set by the curtain's d32
+    PorousSheetConstants truth;
+    truth.a = 2.5;
+    truth.b = 0.4;
+    const auto grid = synthetic::defaultGrid();
+    const std::vector<double> w{0.2, 0.5, 0.3};
+    const double d32 = sauterDiameter(grid[5], w);
+    EXPECT_NEAR(d32, 1/(0.2/1e-4 + 0.5/5e-4 + 0.3/2e-3), 1e-15);
+    const PorousSheetDrift model(truth, air, {}, d32);
+    std::string text = synthetic::table(grid, [&](const synthetic::Point& p) -> synthetic::Values
+    {
+        return {model.velocityRatio(query(p)), 0.1, 1.0};
+    });
+    const std::string fixed = "# fixed: release_velocity_m_s=0";
+    text.replace(text.find(fixed), fixed.size(), fixed + " class_mass_fractions=0.2,0.5,0.3");
+    const fs::path f = tmpDir()/"sauter.csv";
+    synthetic::write(f, text);
+    const PorousSheetFit fit = fitPorousSheet(DriftTable::read(f), air);
+    EXPECT_NEAR(fit.constants.a/truth.a, 1.0, 1e-4);
+    EXPECT_NEAR(fit.constants.b/truth.b, 1.0, 1e-4);
+    EXPECT_NE(fit.constants.provenance.at("curtainDiameter").find("Sauter"), std::string::npos);
+    // the same class query sees the curtain, not its own size
+    DriftQuery fine = query({3, 10, 4, 1.5, 2650, 1e-4}), coarse = fine;
+    coarse.particleDiameter = 2e-3;
+    EXPECT_DOUBLE_EQ(model.velocityRatio(fine), model.velocityRatio(coarse));
+    EXPECT_GT(model.displacement(fine), model.displacement(coarse));
+}
