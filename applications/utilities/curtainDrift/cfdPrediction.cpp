@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <sys/wait.h>
 
 namespace curtainDrift
 {
@@ -140,21 +141,37 @@ std::map<int, double> cfdPredictions
                   << " (" << t.material << ", V_g " << t.airVelocity << " m/s, S " << t.spillRate
                   << " kg/(m s), y " << t.fallHeight << " m) ..." << std::flush;
         const auto t0 = clock::now();
-        const int rc = std::system((cmd.str() + " > " + quote(log.string()) + " 2>&1").c_str());
-        if (rc != 0)
+        const int status = std::system((cmd.str() + " > " + quote(log.string()) + " 2>&1").c_str());
+        const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        try
+        {
+            if (rc != 0)
+            {
+                throw InputError(log.string(), "test " + std::to_string(t.test),
+                    "curtainCase failed (exit " + std::to_string(rc) + "); command: " + cmd.str());
+            }
+            out[t.test] = readCurtainResult(dir/"curtainResult.csv", t.fallHeight, d, w);
+        }
+        catch (const InputError& e)
         {
             std::cout << " failed" << std::endl;
-            throw InputError(log.string(), "test " + std::to_string(t.test),
-                "curtainCase failed (exit " + std::to_string(rc) + "); command: " + cmd.str());
+            if (!o.skipFailed) throw;
+            std::cout << "curtainDrift: test " << t.test << " left out: " << e.what() << std::endl;
+            ++done;
+            continue;
         }
-        out[t.test] = readCurtainResult(dir/"curtainResult.csv", t.fallHeight, d, w);
         ++done;
         const double el = std::chrono::duration<double>(clock::now() - start).count();
         const double row = std::chrono::duration<double>(clock::now() - t0).count();
-        std::cout << " " << std::fixed << std::setprecision(3) << out[t.test] << " m in "
-                  << std::setprecision(0) << row << " s; about " << el/done*(tests.size() - done)
-                  << " s left" << std::defaultfloat << std::endl;
-        if (!o.keep) fs::remove_all(dir);
+        std::ostringstream msg;
+        msg << std::fixed << std::setprecision(3) << out[t.test] << " m in " << std::setprecision(0) << row
+            << " s; about " << el/done*(tests.size() - done) << " s left";
+        std::cout << " " << msg.str() << std::endl;
+        if (!o.keep)
+        {
+            fs::remove_all(dir);
+            fs::remove(log);
+        }
     }
     return out;
 }

@@ -21,11 +21,14 @@ struct CfdOptions
     std::string drag;               //!< curtainCase -drag (empty: its default)
     std::filesystem::path work;     //!< one sub-folder per test
     bool keep = false;              //!< keep the case folders
+    bool skipFailed = false;        //!< a failed row is reported and left out (never written as a number)
     std::string command = "curtainCase";
 };
 
 //- Bulk mean advance per test: sum_i x_i drift_i at the row's fall height
 //  over the class rows of curtainResult.csv. Progress goes to std::cout.
+//  A failed row throws, or with skipFailed is left out of the map (its log
+//  and case folder are kept under work).
 std::map<int, double> cfdPredictions
 (
     const std::vector<drum::WindTunnelTest>& tests,

@@ -3,6 +3,7 @@
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
+//                [-skipFailed]   (cfd: a failed row is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
 //       shared/data/windtunnel_tests.csv; the measured advance is never read)
 //   curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml
@@ -38,7 +39,7 @@ const char* usage =
     "usage:\n"
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
-    "               [-drag NAME] [-work DIR] [-keep]\n"
+    "               [-drag NAME] [-work DIR] [-keep] [-skipFailed]\n"
     "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -63,7 +64,7 @@ struct Args
 
 Args parse(int argc, char** argv)
 {
-    static const std::set<std::string> flags{"keep", "score", "help"};
+    static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png"};
     Args a;
@@ -116,9 +117,19 @@ int predict(const Args& a)
         o.np = std::stoi(a.get("np", "1"));
         o.drag = a.get("drag");
         o.keep = a.has("keep");
+        o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());
         pred = curtainDrift::cfdPredictions(tests, materials, o);
-        if (!o.keep) fs::remove_all(o.work);
+        if (pred.size() < tests.size())
+        {
+            std::cout << "curtainDrift: " << tests.size() - pred.size() << " of " << tests.size()
+                      << " rows failed and are left out of " << out.string() << "; logs in " << o.work.string() << "\n";
+        }
+        else if (!o.keep)
+        {
+            fs::remove_all(o.work);
+        }
+        if (pred.empty()) throw drum::InputError(testsFile.string(), "", "every cfd row failed: nothing written");
     }
     else
     {
@@ -169,9 +180,12 @@ int predict(const Args& a)
         }
     }
     drum::CsvTable table({"test", "mean_advance_m"});
-    for (const auto& t : tests) table.addRow({double(t.test), pred.at(t.test)});
+    for (const auto& t : tests)
+    {
+        if (pred.count(t.test)) table.addRow({double(t.test), pred.at(t.test)});
+    }
     table.write(out);
-    std::cout << "curtainDrift: " << tests.size() << " predictions (" << model << ") written to " << out.string() << "\n";
+    std::cout << "curtainDrift: " << table.rows().size() << " predictions (" << model << ") written to " << out.string() << "\n";
     return 0;
 }
 

@@ -206,6 +206,13 @@ TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
     EXPECT_NE(bad.rc, 0);
     EXPECT_NE(bad.out.find("curtainCase failed"), std::string::npos) << bad.out;
     EXPECT_FALSE(fs::exists(out));
+    // -skipFailed leaves failed rows out; with every row failed nothing is written
+    const CliRun skipped = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -level medium -skipFailed"
+                               " -work " + (dir()/"work3").string(), path);
+    EXPECT_NE(skipped.rc, 0);
+    EXPECT_NE(skipped.out.find("left out"), std::string::npos) << skipped.out;
+    EXPECT_NE(skipped.out.find("every cfd row failed"), std::string::npos) << skipped.out;
+    EXPECT_FALSE(fs::exists(out));
 }
 
 
