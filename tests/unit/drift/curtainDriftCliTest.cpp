@@ -233,7 +233,10 @@ TEST(CurtainDriftCli, BadInputGivesClearErrorsAndNoOutput)
         std::ofstream(p) << f(text(tests));
         return p.string();
     };
-    expectFail("-tests " + tests + " -model magic", "valid names are isolated, sherritt, table, tableVc, porousSheet, cfd");
+    for (const char* name : {"valid names are isolated", "sherritt", "tableVc", "porousSheet", "cfd"})
+    {
+        expectFail("-tests " + tests + " -model magic", name);
+    }
     expectFail("-tests " + (dir()/"absent.csv").string() + " -model isolated", "not found");
     expectFail("-tests " + edited("nocol.csv", [](std::string s) { return s.replace(s.find("air_velocity_m_s"), 3, "gas"); })
                + " -model isolated", "air_velocity_m_s");
