@@ -138,6 +138,10 @@ void runCompartmentWith
         say("slice parameters from Lee's flight model and the " + d.drift + " drift model (V_g "
           + std::to_string(fp.gasVelocity) + " m/s)");
         data = drum::flightModelSliceData(dryer, d.slices, fp);
+        if (const std::string note = fp.drift->summary(); !note.empty())
+        {
+            say(note);
+        }
     }
     else
     {
@@ -395,6 +399,10 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     say("two-phase model (Sherritt 1991), axial solve");
     const drum::TwoPhaseModel model(c);
     const drum::TwoPhaseResult r = model.solveAxial(d.feedRate);
+    if (const std::string note = c.options.drift->summary(); !note.empty())
+    {
+        say(note);
+    }
 
     drum::CsvTable summary({"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
         "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg"});

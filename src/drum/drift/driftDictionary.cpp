@@ -18,7 +18,7 @@ namespace drum
 
 const std::vector<std::string>& driftModelNames()
 {
-    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet"};
+    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet", "auto"};
     return names;
 }
 
@@ -70,13 +70,13 @@ DriftSettings readDriftSettings
     }
     const YAML::Node d = root["drift"];
     if (!d) return s;
-    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, outside, constants)");
+    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, outside, constants, auto)");
     for (const auto& kv : d)
     {
         const std::string k = kv.first.as<std::string>();
-        if (k != "table" && k != "outside" && k != "constants")
+        if (k != "table" && k != "outside" && k != "constants" && k != "auto")
         {
-            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, outside, constants");
+            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, outside, constants, auto");
         }
     }
     auto path = [&](const char* key)
@@ -94,6 +94,35 @@ DriftSettings readDriftSettings
     if (d["outside"])
     {
         s.outside = parseOutOfRangePolicy(scalar(d["outside"], file, "drift.outside"), "drift.outside", file);
+    }
+    if (const YAML::Node a = d["auto"])
+    {
+        if (!a.IsMap()) throw InputError(file, "drift.auto", "must be a dictionary (inside, diluteRatio, fixedAxisTolerance)");
+        for (const auto& kv : a)
+        {
+            const std::string k = kv.first.as<std::string>();
+            if (k == "inside")
+            {
+                s.autoInside = scalar(kv.second, file, "drift.auto.inside");
+                if (s.autoInside != "table" && s.autoInside != "tableVc")
+                {
+                    throw InputError(file, "drift.auto.inside", "'" + s.autoInside + "': valid names are table, tableVc");
+                }
+            }
+            else if (k == "diluteRatio" || k == "fixedAxisTolerance")
+            {
+                const std::string entry = "drift.auto." + k;
+                double v = 0;
+                try { v = kv.second.as<double>(); }
+                catch (const std::exception&) { throw InputError(file, entry, "not a number"); }
+                if (k == "diluteRatio") { requireInRange(v, 0.5, 1.0, entry, file); s.autoOptions.diluteRatio = v; }
+                else { requireInRange(v, 0.0, 1.0, entry, file); s.autoOptions.fixedAxisTolerance = v; }
+            }
+            else
+            {
+                throw InputError(file, "drift.auto." + k, "unknown entry; valid entries are inside, diluteRatio, fixedAxisTolerance");
+            }
+        }
     }
     return s;
 }
@@ -123,6 +152,29 @@ std::shared_ptr<const DriftModel> makeDriftModel
     {
         const auto file = s.constants.empty() ? defaultPorousSheetConstantsFile() : s.constants;
         return std::make_shared<PorousSheetDrift>(readPorousSheetConstants(file), gas, law, s.curtainDiameter);
+    }
+    if (s.model == "auto")
+    {
+        // The table is optional here: without one, auto uses lone particles
+        // and the reduced model, and says so
+        std::shared_ptr<const DriftTable> table;
+        std::shared_ptr<const DriftModel> inside;
+        const auto file = s.table.empty() ? defaultDriftTableFile() : s.table;
+        if (!s.table.empty() || std::filesystem::exists(file))
+        {
+            // inside the range by construction, except on fixed axes within
+            // their tolerance: clamp there (with the table's warning)
+            DriftTableOptions o;
+            o.outside = OutOfRangePolicy::clamp;
+            o.warn = s.warn;
+            table = std::make_shared<const DriftTable>(DriftTable::read(file, o));
+            if (s.autoInside == "table") inside = std::make_shared<TableDrift>(table);
+            else inside = std::make_shared<TableVcDrift>(table, gas, law);
+        }
+        const auto constants = s.constants.empty() ? defaultPorousSheetConstantsFile() : s.constants;
+        auto reduced = std::make_shared<const PorousSheetDrift>(readPorousSheetConstants(constants), gas, law, s.curtainDiameter);
+        auto isolated = std::make_shared<const IsolatedParticleDrift>(gas, law);
+        return std::make_shared<AutoDrift>(table, inside, reduced, isolated, s.autoOptions);
     }
     throw InputError("", entry, "unknown drift model '" + s.model + "': valid names are " + nameList());
 }

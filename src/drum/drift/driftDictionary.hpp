@@ -2,16 +2,21 @@
 // that needs more than a name (table path, out-of-range policy, constants):
 //
 //   model:
-//     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet
+//     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet | auto
 //   drift:                 # optional
 //     table: path          # CFD drift table, relative to the case folder;
 //                          # default $DRYER_PROJECT/cases/driftTable/driftTable.csv
 //     outside: refuse      # refuse (default) | clamp, queries outside the table
 //     constants: path      # porousSheet constants; default
 //                          # $DRYER_PROJECT/cases/driftModels/porousSheet.yaml
+//     auto:                # with model.drift auto (autoDrift.hpp), optional
+//       inside: tableVc    # table | tableVc: the model inside the table
+//       diluteRatio: 0.95  # porousSheet V_c/V_g above which lone particles serve
+//       fixedAxisTolerance: 0.2   # reach of an axis the sweep held fixed
 #ifndef DRUM_DRIFT_DRIFTDICTIONARY_HPP
 #define DRUM_DRIFT_DRIFTDICTIONARY_HPP
 
+#include "drum/drift/autoDrift.hpp"
 #include "drum/drift/driftModel.hpp"
 #include "drum/drift/driftTable.hpp"
 
@@ -36,6 +41,9 @@ struct DriftSettings
     //- porousSheet: surface-mean diameter of the curtain's solids (set by
     //  the caller from the material, sauterDiameter()); 0: each class alone
     double curtainDiameter = 0;
+    //- model auto: the table model inside the table, and the thresholds
+    std::string autoInside = "tableVc";
+    AutoDriftOptions autoOptions;
 };
 
 //- Every drift-model name makeDriftModel knows

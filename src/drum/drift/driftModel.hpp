@@ -40,6 +40,10 @@ public:
 
     //- Name used in dictionaries
     virtual std::string name() const = 0;
+
+    //- What a run should tell the user about this model's use (choices
+    //  made, ranges left); empty by default
+    virtual std::string summary() const { return {}; }
 };
 
 //- Lone particle in the mean gas velocity, V = V_g (Sherritt 1991 Eqs 13,
