@@ -37,11 +37,23 @@ def cells(case):
     return int(m.group(1))
 
 
-def entry(case, name):
-    r = subprocess.run(['foamDictionary', '-entry', name, '-value',
-                        os.path.join(case, 'system', 'blockMeshDict'), '-expand'],
+def foam_value(path, name):
+    r = subprocess.run(['foamDictionary', '-entry', name, '-value', path],
                        capture_output=True, text=True)
-    return float(r.stdout.split()[0]) if r.returncode == 0 and r.stdout.split() else float('nan')
+    return r.stdout.strip() if r.returncode == 0 else None
+
+
+def entry(case, name):
+    """A mesh entry: explicit in meshParameters, else the level's."""
+    mp = os.path.join(case, 'system', 'meshParameters')
+    v = foam_value(mp, name)
+    if v is None:
+        level = foam_value(mp, 'level')
+        v = foam_value(os.path.join(case, 'system', 'meshLevels'),
+                       f'levels/{level}/{name}')
+    if v is None:
+        sys.exit(f"{mp}: no entry '{name}' (nor in the level's system/meshLevels)")
+    return float(v)
 
 
 def last_row(path, column):
