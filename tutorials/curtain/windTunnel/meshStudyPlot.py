@@ -147,6 +147,17 @@ def main():
     for r in rows:
         ax[0].annotate(f"{r['level']} ({r['nzSheet']} across)", (r['cells'], r['drift_m']),
                        textcoords='offset points', xytext=(4, 4), fontsize=8)
+    peer_csv = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..',
+                            'tests', 'benchmarks', 'curtainPeer', 'results', 'curtainPeer.csv')
+    if os.path.exists(peer_csv):   # the same meshes with twoPhaseEulerFoam, if measured
+        import csv
+        with open(peer_csv) as f:
+            peer = sorted(((int(r['cells']), float(r['drift_m'])) for r in csv.DictReader(f)
+                           if r['solver'] == 'twoPhaseEulerFoam' and r['level'] in levels),
+                          key=lambda t: t[0])
+        if peer:
+            ax[0].plot([c for c, _ in peer], [d for _, d in peer], 's--',
+                       label='twoPhaseEulerFoam (transient, curtainPeer)')
     ax[0].axhline(1.03, color='k', ls='--', lw=0.8, label='Sherritt test 22 (1.03 m)')
     ax[0].set_xscale('log')
     ax[0].set_xlabel('cells (half tunnel)')
