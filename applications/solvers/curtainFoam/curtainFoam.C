@@ -32,6 +32,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "sigFpe.H"
 #include "singlePhaseTransportModel.H"
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
@@ -56,6 +57,15 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // A diverging iteration shows as NaN and is stopped by checkFields.H
+    // with its cause and the last good time on disk, rather than by a
+    // floating-point trap inside a linear solver (which names neither).
+    // An explicit FOAM_SIGFPE in the environment still decides.
+    if (Foam::getEnv("FOAM_SIGFPE").empty())
+    {
+        sigFpe::unset(false);
+    }
     #include "createTime.H"
     #include "createMesh.H"
     #include "createControl.H"
