@@ -160,7 +160,13 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
         const std::string key = trim(body.substr(0, colon));
         if (t.header_.count(key))
         {
-            throw InputError(file, line(int(k) + 1), "header key '" + key + "' given twice");
+            // one '# missing:' line per missing case; other keys only once
+            if (key != "missing")
+            {
+                throw InputError(file, line(int(k) + 1), "header key '" + key + "' given twice");
+            }
+            t.header_[key] += "\n" + trim(body.substr(colon + 1));
+            continue;
         }
         t.header_[key] = trim(body.substr(colon + 1));
         keyOrder.push_back(key);

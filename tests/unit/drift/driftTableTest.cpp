@@ -262,6 +262,7 @@ TEST(DriftTable, MalformedFiles)
         expectError(put(std::string("no_") + key + ".csv", s), std::string("missing header key '") + key);
     }
     expectError(put("noaxes.csv", replace(good, "# axes:", "# axis:")), "'axes'");
+    expectError(put("twice.csv", replace(good, "# mesh:", "# mesh: fine\n# mesh:")), "'mesh' given twice");
     {
         const auto at = good.find("# range fall_height_m");
         std::string s = good;
@@ -318,13 +319,14 @@ TEST(DriftTable, MissingPointsDeclaredInTheHeaderAreRefusedWhenNeeded)
     const auto grid = synthetic::defaultGrid();
     const auto rows = synthetic::rows(grid, multilinear);
     std::string s = synthetic::header(grid);
-    s.insert(s.find("# cases:"), "# missing: 1 grid point (case c0 failed)\n");
+    s.insert(s.find("# cases:"), "# missing: c0 gas_velocity_m_s=1.5 (FAILED)\n# missing: 1 grid point in all\n");
     s += synthetic::columns();
     for (std::size_t i = 1; i < rows.size(); ++i) s += rows[i];
     const fs::path f = tmpDir()/"missing.csv";
     synthetic::write(f, s);
     const DriftTable t = DriftTable::read(f);
     EXPECT_EQ(t.rows().size(), rows.size() - 1);
+    EXPECT_EQ(t.header().at("missing"), "c0 gas_velocity_m_s=1.5 (FAILED)\n1 grid point in all");
     // c0 is the first grid point (all axes at their minimum)
     EXPECT_THROW(t.lookup(query({1.5, 2, 1, 1, 1200, 1e-4})), InputError);
     EXPECT_THROW(t.lookup(query({1.6, 2, 1, 1, 1200, 1e-4})), InputError);
