@@ -3,7 +3,9 @@
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
-//                [-skipFailed]   (cfd: a failed row is reported and left out)
+//                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
+//                                 table query needing a missing grid point or outside
+//                                 the range under refuse - is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
 //       shared/data/windtunnel_tests.csv; the measured advance is never read)
 //   curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml
@@ -164,8 +166,18 @@ int predict(const Args& a)
             }
             catch (const drum::InputError& e)
             {
-                throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
+                if (!a.has("skipFailed"))
+                {
+                    throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
+                }
+                std::cout << "curtainDrift: test " << t.test << " left out: " << e.what() << "\n";
             }
+        }
+        if (pred.empty()) throw drum::InputError(testsFile.string(), "", "the model answered no row: nothing written");
+        if (pred.size() < tests.size())
+        {
+            std::cout << "curtainDrift: " << tests.size() - pred.size() << " of " << tests.size()
+                      << " rows left out (-skipFailed)\n";
         }
         const drum::DriftTable* table = nullptr;
         if (const auto* td = dynamic_cast<const drum::TableDrift*>(models.begin()->second.get())) table = &td->table();
