@@ -29,19 +29,6 @@ def atomic_write(path, text):
     os.replace(tmp, path)
 
 
-def last_value(path, column):
-    header, row = None, None
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#'):
-                cols = line[1:].split()
-                if cols and cols[0] == 'Time':
-                    header = cols
-            elif line.strip():
-                row = line.split()
-    return float(row[header.index(column)])
-
-
 def main():
     run_root, out, level, np_ = sys.argv[1:5]
     rows, hist = [], {}
@@ -55,7 +42,7 @@ def main():
         s = steadyDrift.analyse(dat, log, 0.01, 'drift_bulk')
         with open(os.path.join(case, 'log.blockMesh')) as f:
             cells = int(re.search(r'nCells:\s*(\d+)', f.read()).group(1))
-        vc = last_value(os.path.join(case, 'postProcessing/gasInCurtain/0/curtainGasVelocity.dat'),
+        vc = steadyDrift.last_value(os.path.join(case, 'postProcessing/gasInCurtain/0/curtainGasVelocity.dat'),
                         'VcByVg')
         rows.append(dict(level=level, np=np_, solver=solver, cells=cells,
                          drift_m='%.4f' % s['drift'], VcByVg='%.4f' % vc,

@@ -56,19 +56,6 @@ def entry(case, name):
     return float(v)
 
 
-def last_row(path, column):
-    header, row = None, None
-    with open(path) as f:
-        for line in f:
-            if line.startswith('#'):
-                cols = line[1:].split()
-                if cols and cols[0] == 'Time':
-                    header = cols
-            elif line.strip():
-                row = line.split()
-    return float(row[header.index(column)])
-
-
 def gci(f1, f2, f3, r21, r32):
     """Celik et al. 2008: apparent order p (fixed-point), extrapolated f,
     fine-grid GCI (safety factor 1.25). f1 finest."""
@@ -98,7 +85,7 @@ def main():
             print(f"{lv}: no run in {case}; skipped")
             continue
         s = steadyDrift.analyse(dat, log, 0.01, 'drift_bulk')
-        vc = last_row(os.path.join(case, 'postProcessing/gasInCurtain/0/curtainGasVelocity.dat'),
+        vc = steadyDrift.last_value(os.path.join(case, 'postProcessing/gasInCurtain/0/curtainGasVelocity.dat'),
                       'VcByVg')
         nz = entry(case, 'nzSheet')
         rows.append(dict(level=lv, cells=cells(case), nzSheet=int(nz),

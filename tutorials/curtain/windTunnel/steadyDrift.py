@@ -36,6 +36,14 @@ def read_drift(path, column):
     return [(r[0], r[j]) for r in rows if len(r) > j]
 
 
+def last_value(path, column):
+    """Last written value of a column of a function object's .dat file."""
+    rows = read_drift(path, column)
+    if not rows:
+        sys.exit(f"{path}: no data rows")
+    return rows[-1][1]
+
+
 def read_clock(path):
     """Map simulated time (or iteration) -> (cpu, wall) [s] at its end."""
     clock, t, steps = {}, None, 0
