@@ -218,6 +218,11 @@ TwoPhaseTracerNetwork twoPhaseTracerNetwork
             {
                 b.flow(dense(i), land(i + j0), (1 - f)*q);
                 b.flow(dense(i), land(i + j0 + 1), f*q);
+                // an empty airborne compartment receives nothing; a unit
+                // rate into the dense compartment keeps K regular (a zero
+                // column would make it singular) and conserves any tracer
+                b.diag(air(i)) -= 1.0;
+                b.t.emplace_back(dense(i), air(i), 1.0);
             }
             // dense flow (size independent velocity, Eq 52), upwind
             const double F2k = l.xd[k]*l.F2;
