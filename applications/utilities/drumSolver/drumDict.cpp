@@ -5,6 +5,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -117,6 +118,82 @@ std::filesystem::path expandPath(const std::string& raw, const std::filesystem::
     return p.is_absolute() ? p : caseDir/p;
 }
 
+drum::SherrittFlightSpec readSherrittFlight
+(
+    const Reader& r,
+    const YAML::Node& n,
+    const std::string& sec,
+    double D,
+    double Di,
+    double phiDefaultDeg,
+    bool interior
+)
+{
+    constexpr double deg = 3.14159265358979323846/180;
+    drum::SherrittFlightSpec s;
+    s.type = drum::parseSherrittFlightType(
+        r.word(n, sec, "type", {"twoSided", "EAD", "CBD", "table"}), sec + ".type", r.file);
+    s.count = int(r.number(n, sec, "count", interior ? 1 : 2, 200));
+    // keys each type reads (anything else is a typo)
+    std::vector<std::string> keys = {"type", "count"};
+    switch (s.type)
+    {
+        case drum::SherrittFlightType::twoSided:
+            s.baseLength = r.number(n, sec, "baseLength", 0, D/2, {}, true);
+            s.tipLength = r.number(n, sec, "tipLength", 0, D/2, 0.0);
+            s.tipAngle = r.number(n, sec, "tipAngle_deg", 60, 180, 90.0)*deg;
+            s.baseAngle = r.number(n, sec, "baseAngle_deg", 30, 150, 90.0)*deg;
+            keys.insert(keys.end(), {"baseLength", "tipLength", "tipAngle_deg", "baseAngle_deg"});
+            break;
+        case drum::SherrittFlightType::ead:
+        case drum::SherrittFlightType::cbd:
+        {
+            const bool cbd = s.type == drum::SherrittFlightType::cbd;
+            s.radius = r.number(n, sec, "radius", 0, D/4, {}, true);
+            s.designRepose = r.number(n, sec, "designRepose_deg", 0, 90, phiDefaultDeg, true)*deg;
+            s.tipDiameter = cbd ? r.number(n, sec, "tipDiameter", 0, D, {}, true)
+                                : r.number(n, sec, "tipDiameter", 0, D, 0.0);
+            if (cbd)
+            {
+                s.bias = r.number(n, sec, "bias", 0, 0.99);
+            }
+            keys.insert(keys.end(), {"radius", "designRepose_deg", "tipDiameter", "bias"});
+            break;
+        }
+        case drum::SherrittFlightType::table:
+        {
+            s.tipDiameter = r.number(n, sec, "tipDiameter", interior ? Di : 0, D, {}, true);
+            const YAML::Node a = n["angles_deg"], l = n["lengths"];
+            if (!a || !a.IsSequence() || a.size() < 2)
+            {
+                throw InputError(r.file, sec + ".angles_deg", "a list of at least 2 ascending rotation angles in deg");
+            }
+            if (!l || !l.IsSequence() || l.size() != a.size())
+            {
+                throw InputError(r.file, sec + ".lengths", "one horizontal length (m, >= 0) per angle in angles_deg");
+            }
+            for (std::size_t i = 0; i < a.size(); ++i)
+            {
+                s.angles.push_back(a[i].as<double>()*deg);
+                s.lengths.push_back(l[i].as<double>());
+            }
+            keys.insert(keys.end(), {"tipDiameter", "angles_deg", "lengths"});
+            break;
+        }
+    }
+    for (const auto& kv : n)
+    {
+        const std::string k = kv.first.as<std::string>();
+        if (std::find(keys.begin(), keys.end(), k) == keys.end())
+        {
+            std::string list;
+            for (const auto& a : keys) list += (list.empty() ? "" : ", ") + a;
+            throw InputError(r.file, sec + "." + k, "unknown entry for type " + drum::toString(s.type) + "; allowed: " + list);
+        }
+    }
+    return s;
+}
+
 } // namespace
 
 
@@ -146,13 +223,39 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     d.slopeDeg = r.number(drum, "drum", "slope_deg", 0, 20);
     d.speedRpm = r.number(drum, "drum", "speed_rpm", 0, 60, {}, true);
 
+    d.centrefillDiameter = r.number(drum, "drum", "centrefillDiameter", 0, 0.95*d.diameter, 0.0);
+
+    // flights: Lee's two-section flight (flat entries) or Sherritt's
+    // description (exterior/interior subsections, read after the material)
     const YAML::Node fl = r.section(root, "flights");
-    d.flightCount = int(r.number(fl, "flights", "count", 2, 200));
-    d.baseLength = r.number(fl, "flights", "baseLength", 0, d.diameter/2, {}, true);
-    d.tipLength = r.number(fl, "flights", "tipLength", 0, d.diameter/2, 0.0);
-    d.baseAngleDeg = r.number(fl, "flights", "baseAngle_deg", 30, 150, 90.0);
-    d.tipAngleDeg = r.number(fl, "flights", "tipAngle_deg", 60, 180, 90.0);
+    const bool sherrittFlights = bool(fl["exterior"]);
     d.flightAxialLength = r.number(fl, "flights", "axialLength", 0, d.length, d.length, true);
+    d.flightTableStepDeg = r.number(fl, "flights", "tableStep_deg", 0.1, 5, 1.0);
+    if (!sherrittFlights)
+    {
+        if (fl["interior"])
+        {
+            throw InputError(r.file, "flights.interior", "needs flights.exterior (Sherritt's flight description)");
+        }
+        d.flightCount = int(r.number(fl, "flights", "count", 2, 200));
+        d.baseLength = r.number(fl, "flights", "baseLength", 0, d.diameter/2, {}, true);
+        d.tipLength = r.number(fl, "flights", "tipLength", 0, d.diameter/2, 0.0);
+        d.baseAngleDeg = r.number(fl, "flights", "baseAngle_deg", 30, 150, 90.0);
+        d.tipAngleDeg = r.number(fl, "flights", "tipAngle_deg", 60, 180, 90.0);
+    }
+    else
+    {
+        for (const char* k : {"count", "baseLength", "tipLength", "baseAngle_deg", "tipAngle_deg"})
+        {
+            if (fl[k])
+            {
+                throw InputError(r.file, std::string("flights.") + k,
+                    "give either the two-section flight entries or flights.exterior, not both");
+            }
+        }
+        d.flightCount = 0;
+        d.baseLength = d.tipLength = d.baseAngleDeg = d.tipAngleDeg = 0;
+    }
 
     const YAML::Node m = r.section(root, "material");
     d.feedRate = r.number(m, "material", "feedRate", 0, 1e4, {}, true);
@@ -195,6 +298,26 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     if (!(sum > 0)) throw InputError(r.file, "material.fractions_pct", "must not all be zero");
     for (double& f : d.fractions) f /= sum;
 
+    if (sherrittFlights)
+    {
+        const double phiDefault = d.reposeDeg.value_or(45.0);
+        d.exteriorFlight = readSherrittFlight(r, r.section(fl, "exterior"), "flights.exterior",
+            d.diameter, 0.0, phiDefault, false);
+        if (fl["interior"])
+        {
+            if (!(d.centrefillDiameter > 0))
+            {
+                throw InputError(r.file, "flights.interior", "interior flights need drum.centrefillDiameter > 0");
+            }
+            d.interiorFlight = readSherrittFlight(r, r.section(fl, "interior"), "flights.interior",
+                d.diameter, d.centrefillDiameter, phiDefault, true);
+        }
+    }
+    else if (d.centrefillDiameter > 0)
+    {
+        throw InputError(r.file, "drum.centrefillDiameter", "a centrefill needs Sherritt's flight description (flights.exterior, flights.interior)");
+    }
+
     const YAML::Node gas = r.section(root, "gas", false);
     const YAML::Node g = gas ? gas : YAML::Node(YAML::NodeType::Map);
     d.counterCurrent = r.word(g, "gas", "flow", {"coCurrent", "counterCurrent"}, std::string("counterCurrent")) == "counterCurrent";
@@ -203,7 +326,44 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
 
     const YAML::Node mo = r.section(root, "model");
     d.model = r.word(mo, "model", "type", {"compartment", "twoPhase"});
+    d.slicesGiven = bool(mo["slices"]);
     d.slices = int(r.number(mo, "model", "slices", 1, 1000, 30.0));
+    if (d.model == "compartment" && sherrittFlights)
+    {
+        throw InputError(r.file, "flights.exterior", "model compartment needs the two-section flight entries "
+            "(flights.count, baseLength, tipLength, baseAngle_deg, tipAngle_deg)");
+    }
+    if (mo["imposedDenseFlow"])
+    {
+        d.imposedDenseFlow = r.number(mo, "model", "imposedDenseFlow", -1e4, 1e4);
+    }
+    if (mo["dischargeEndAngle_deg"])
+    {
+        d.dischargeEndAngleDeg = r.number(mo, "model", "dischargeEndAngle_deg", 40, 360);
+    }
+    d.axialSteps = int(r.number(mo, "model", "axialSteps", 10, 100000, 200.0));
+    d.denseDispersionValue = 0;
+    d.denseDispersion = "none";
+    if (const YAML::Node dd = mo["denseDispersion"])
+    {
+        const std::string v = dd.as<std::string>();
+        if (v == "none" || v == "sherritt2001")
+        {
+            d.denseDispersion = v;
+        }
+        else
+        {
+            d.denseDispersion = "value";
+            d.denseDispersionValue = r.number(mo, "model", "denseDispersion", 0, 1);
+        }
+    }
+    for (const char* k : {"imposedDenseFlow", "dischargeEndAngle_deg", "axialSteps", "denseDispersion"})
+    {
+        if (mo[k] && d.model != "twoPhase")
+        {
+            throw InputError(r.file, std::string("model.") + k, "only for model.type twoPhase");
+        }
+    }
     d.partition = r.word(mo, "model", "partition", {"leeCorrelations", "flightModel"}, std::string("leeCorrelations"));
     d.kilnTime = r.number(mo, "model", "kilnTime", 0, big, 9.28, true);
     d.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);

@@ -4,6 +4,7 @@
 #define DRUMSOLVER_DRUMDICT_HPP
 
 #include "drum/drift/driftDictionary.hpp"
+#include "drum/flights/sherrittFlightSpec.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 
 #include <filesystem>
@@ -29,9 +30,14 @@ struct DrumDict
 
     // drum
     double length, diameter, slopeDeg, speedRpm;
+    double centrefillDiameter;      //!< D_i, m (0: open drum; twoPhase)
     // flights (two-section flight, Lee Table 4.1 parameters)
     int flightCount;
     double baseLength, tipLength, baseAngleDeg, tipAngleDeg, flightAxialLength;
+    //- Sherritt flight description (flights.exterior / flights.interior,
+    //  twoPhase); unset exterior: the two-section flight above
+    std::optional<drum::SherrittFlightSpec> exteriorFlight, interiorFlight;
+    double flightTableStepDeg;      //!< tabulation step of flight shapes
     // material
     double feedRate, bulkDensity, particleDensity, sphericity;
     std::optional<double> reposeDeg;                 //!< constant phi
@@ -47,6 +53,13 @@ struct DrumDict
     std::string partition;      //!< leeCorrelations | flightModel
     double kilnTime, backFraction, dragFactor, designLoadMultiplier;
     double stagnantRatio, exchangeTime;   //!< stagnant-zone extension
+    bool slicesGiven;           //!< model.slices in the dictionary (twoPhase: else automatic)
+    // twoPhase
+    std::optional<double> imposedDenseFlow;      //!< F_2, kg/s (Kamke, Fig 5.30)
+    std::optional<double> dischargeEndAngleDeg;  //!< theta_i at the solids discharge
+    int axialSteps;                              //!< RK4 steps of the axial solve
+    std::string denseDispersion;                 //!< none | sherritt2001 | value
+    double denseDispersionValue;                 //!< m2/s when a value is given
     std::string drift;          //!< isolated | sherritt | table | tableVc | porousSheet
     drum::DriftSettings driftSettings;   //!< model.drift + drift section (table, outside, constants)
     // rtd

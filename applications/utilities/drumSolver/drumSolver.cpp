@@ -6,8 +6,10 @@
 //                the tracer RTD (exact / implicit / explicit integration);
 //                optional least-squares estimation from a measured curve
 //   twoPhase     Sherritt (1991) airborne/dense model, axial (DRUM3) solve:
-//                holdup, airborne fraction, mean residence time (no RTD)
-// Writes DIR/results/{summary,rtd,profile}.csv (+ estimation.csv) and PNGs,
+//                holdup, airborne fraction, mean residence time (Eq 138),
+//                per size class (Eq 139), and the RTD of its tracer network
+//                (twoPhaseTracer.hpp), optional dense-phase dispersion
+// Writes DIR/results/{summary,rtd,profile}.csv (+ estimation.csv, classes.csv) and PNGs,
 // each file whole or not at all.
 #include "drumDict.hpp"
 
@@ -23,7 +25,11 @@
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/compartmentFlightModel.hpp"
 #include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/axialDispersion.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
+#include "drum/transport/twoPhaseTracer.hpp"
+#include "drum/drift/porousSheetDrift.hpp"
+#include "drum/flights/sherrittFlightSpec.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -110,6 +116,67 @@ void plotIfPossible(const drum::Plot& p, const fs::path& file)
         return;
     }
     drum::writePng(p, file);
+}
+
+// rtd.csv and the linear and log RTD plots against the measured points
+void writeRtdOutputs
+(
+    const DrumDict& d,
+    const std::vector<double>& time,
+    const std::vector<double>& E,
+    const std::optional<Measured>& measured,
+    const std::string& modelLabel,
+    const fs::path& out
+)
+{
+    drum::CsvTable r({"time_s", "E_per_s", "F_cumulative"});
+    double F = 0;
+    for (std::size_t i = 0; i < time.size(); ++i)
+    {
+        if (i > 0) F += 0.5*(time[i] - time[i - 1])*(E[i] + E[i - 1]);
+        r.addRow({time[i], E[i], F});
+    }
+    r.write(out/"rtd.csv");
+
+    drum::Plot pr;
+    pr.title = "Residence-time distribution";
+    pr.xlabel = "time after pulse start (min)";
+    pr.ylabel = "E(t) (1/min)";
+    drum::PlotSeries model{modelLabel, {}, {}};
+    for (std::size_t i = 0; i < time.size(); ++i)
+    {
+        model.x.push_back(time[i]/60);
+        model.y.push_back(E[i]*60);
+    }
+    pr.series.push_back(model);
+    if (measured)
+    {
+        std::string name = d.tracer->file.filename().string();
+        for (char& ch : name) if (ch == '_') ch = ' ';   // gnuplot enhanced text
+        drum::PlotSeries meas{"measured (" + name + ")", {}, {}, "points pt 7 ps 1.2"};
+        for (std::size_t i = 0; i < measured->t.size(); ++i)
+        {
+            if (measured->t[i] < 0) continue;
+            meas.x.push_back(measured->t[i]/60);
+            meas.y.push_back(measured->E[i]*60);
+        }
+        pr.series.push_back(meas);
+    }
+    plotIfPossible(pr, out/"rtd.png");
+    // The tail on a log scale (positive values only)
+    drum::Plot lg = pr;
+    lg.logy = true;
+    lg.title = "Residence-time distribution (log scale: the tail)";
+    for (drum::PlotSeries& se : lg.series)
+    {
+        drum::PlotSeries keep{se.title, {}, {}, se.style};
+        for (std::size_t i = 0; i < se.x.size(); ++i)
+        {
+            if (se.y[i] > 1e-7) { keep.x.push_back(se.x[i]); keep.y.push_back(se.y[i]); }
+        }
+        se = keep;
+    }
+    plotIfPossible(lg, out/"rtd_log.png");
 }
 
 void runCompartmentWith
@@ -204,15 +271,6 @@ void runCompartmentWith
     summary.addRow(row);
     summary.write(out/"summary.csv");
 
-    drum::CsvTable r({"time_s", "E_per_s", "F_cumulative"});
-    double F = 0;
-    for (std::size_t i = 0; i < rtd.time.size(); ++i)
-    {
-        if (i > 0) F += 0.5*(rtd.time[i] - rtd.time[i - 1])*(rtd.E[i] + rtd.E[i - 1]);
-        r.addRow({rtd.time[i], rtd.E[i], F});
-    }
-    r.write(out/"rtd.csv");
-
     drum::CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
         "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",
         "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B"});
@@ -228,45 +286,8 @@ void runCompartmentWith
     }
     prof.write(out/"profile.csv");
 
-    drum::Plot pr;
-    pr.title = "Residence-time distribution";
-    pr.xlabel = "time after pulse start (min)";
-    pr.ylabel = "E(t) (1/min)";
-    drum::PlotSeries model{"compartment model (" + std::to_string(d.slices) + " slices)", {}, {}};
-    for (std::size_t i = 0; i < rtd.time.size(); ++i)
-    {
-        model.x.push_back(rtd.time[i]/60);
-        model.y.push_back(rtd.E[i]*60);
-    }
-    pr.series.push_back(model);
-    if (measured)
-    {
-        std::string name = d.tracer->file.filename().string();
-        for (char& ch : name) if (ch == '_') ch = ' ';   // gnuplot enhanced text
-        drum::PlotSeries meas{"measured (" + name + ")", {}, {}, "points pt 7 ps 1.2"};
-        for (std::size_t i = 0; i < measured->t.size(); ++i)
-        {
-            if (measured->t[i] < 0) continue;
-            meas.x.push_back(measured->t[i]/60);
-            meas.y.push_back(measured->E[i]*60);
-        }
-        pr.series.push_back(meas);
-    }
-    plotIfPossible(pr, out/"rtd.png");
-    // The tail on a log scale (positive values only)
-    drum::Plot lg = pr;
-    lg.logy = true;
-    lg.title = "Residence-time distribution (log scale: the tail)";
-    for (drum::PlotSeries& se : lg.series)
-    {
-        drum::PlotSeries keep{se.title, {}, {}, se.style};
-        for (std::size_t i = 0; i < se.x.size(); ++i)
-        {
-            if (se.y[i] > 1e-7) { keep.x.push_back(se.x[i]); keep.y.push_back(se.y[i]); }
-        }
-        se = keep;
-    }
-    plotIfPossible(lg, out/"rtd_log.png");
+    writeRtdOutputs(d, rtd.time, rtd.E, measured,
+        "compartment model (" + std::to_string(d.slices) + " slices)", out);
 
     drum::Plot ph;
     ph.title = "Holdup along the drum (feed end at 0)";
@@ -369,7 +390,8 @@ void runCompartment(const DrumDict& d, const fs::path& out)
 namespace
 {
 
-void runTwoPhase(const DrumDict& d, const fs::path& out)
+// The two-phase case of a dictionary (drum, flights, material, gas, model)
+drum::TwoPhaseCase twoPhaseCase(const DrumDict& d)
 {
     if (!d.reposeDeg)
     {
@@ -377,15 +399,36 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
             "model twoPhase needs a constant kinetic angle of repose (deg, (0, 90])");
     }
     drum::TwoPhaseCase c;
-    c.name = d.path.parent_path().filename().string();
+    c.name = d.path.string();
     c.drum.shellDiameter = d.diameter;
     c.drum.length = d.length;
     c.drum.slope = d.slopeDeg*pi/180;
     c.drum.speed = d.speedRpm/60;
-    say("tabulating the flight (Sherritt's horizontal-length table)");
-    c.exterior = drum::tabulateSherrittFlight(
-        drum::twoSidedFlightShape(d.diameter, d.baseLength, d.tipLength, d.tipAngleDeg*pi/180, d.baseAngleDeg*pi/180),
-        d.flightCount, d.length);
+    c.drum.centrefillDiameter = d.centrefillDiameter;
+    const double step = d.flightTableStepDeg*pi/180;
+    if (d.exteriorFlight)
+    {
+        say("tabulating the " + drum::toString(d.exteriorFlight->type) + " exterior flight (Sherritt's horizontal-length table)");
+        c.exterior = drum::buildSherrittFlight(*d.exteriorFlight, drum::FlightSide::exterior, d.diameter,
+            d.flightAxialLength, step, d.path.string());
+        if (d.interiorFlight)
+        {
+            c.interior = drum::buildSherrittFlight(*d.interiorFlight, drum::FlightSide::interior, d.diameter,
+                d.flightAxialLength, step, d.path.string());
+        }
+    }
+    else
+    {
+        say("tabulating the two-section flight (Sherritt's horizontal-length table)");
+        drum::SherrittFlightSpec f;
+        f.count = d.flightCount;
+        f.baseLength = d.baseLength;
+        f.tipLength = d.tipLength;
+        f.tipAngle = d.tipAngleDeg*pi/180;
+        f.baseAngle = d.baseAngleDeg*pi/180;
+        c.exterior = drum::buildSherrittFlight(f, drum::FlightSide::exterior, d.diameter, d.flightAxialLength,
+            step, d.path.string());
+    }
     c.material.particleDensity = d.particleDensity;
     c.material.bulkDensity = d.bulkDensity;
     c.material.repose = *d.reposeDeg*pi/180;
@@ -396,19 +439,154 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     c.gas.temperatureC = d.gasTemperatureC;
     c.gas.direction = d.counterCurrent ? drum::GasFlow::countercurrent : drum::GasFlow::cocurrent;
     c.options.drift = drum::makeDriftModel(d.driftSettings, particleDrag::Gas::air(d.gasTemperatureC), {}, "model.drift");
-    say("two-phase model (Sherritt 1991), axial solve");
+    c.options.imposedDenseFlow = d.imposedDenseFlow;
+    c.options.axialSteps = d.axialSteps;
+    return c;
+}
+
+void runTwoPhase(const DrumDict& d, const fs::path& out)
+{
+    const drum::TwoPhaseCase c = twoPhaseCase(d);
+    std::optional<Measured> measured;
+    if (d.tracer)
+    {
+        measured = readTracer(*d.tracer);
+    }
+    say(std::string("two-phase model (Sherritt 1991), axial solve")
+        + (d.imposedDenseFlow ? " with the dense flow imposed" : ""));
     const drum::TwoPhaseModel model(c);
-    const drum::TwoPhaseResult r = model.solveAxial(d.feedRate);
+    drum::AxialOptions ax;
+    if (d.dischargeEndAngleDeg)
+    {
+        ax.dischargeEndAngle = *d.dischargeEndAngleDeg*pi/180;
+    }
+    const drum::TwoPhaseResult r = model.solveAxial(d.feedRate, ax);
     if (const std::string note = c.options.drift->summary(); !note.empty())
     {
         say(note);
     }
 
-    drum::CsvTable summary({"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
-        "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg"});
-    summary.addRow({r.holdup_kg, r.airborne_fraction, r.meanResidenceTime, nan,
-        r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi});
+    // Dense-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51 by
+    // regime with X the mean dense holdup over the drum cross-section)
+    drum::TwoPhaseTracerOptions to;
+    if (d.slicesGiven)
+    {
+        to.slices = d.slices;
+    }
+    std::string dispersionNote = "none";
+    if (d.denseDispersion == "value")
+    {
+        to.denseDispersion = d.denseDispersionValue;
+        dispersionNote = "given";
+    }
+    else if (d.denseDispersion == "sherritt2001")
+    {
+        double denseH = 0, sumZ = 0;
+        for (std::size_t k = 1; k < r.profile.size(); ++k)
+        {
+            const auto& a = r.profile[k - 1];
+            const auto& b = r.profile[k];
+            const double dz = std::abs(b.distanceFromDischarge - a.distanceFromDischarge);
+            denseH += 0.5*dz*((a.holdup - a.airborneHoldup) + (b.holdup - b.airborneHoldup));
+            sumZ += dz;
+        }
+        drum::AxialDispersionInput in;
+        in.drumDiameter = d.diameter;
+        in.speed = d.speedRpm/60;
+        std::vector<double> dp;
+        for (double sz : d.sizes) dp.push_back(sz*d.sphericity);
+        in.particleDiameter = drum::sauterDiameter(dp, d.fractions);
+        in.fill = (sumZ > 0 ? denseH/sumZ : 0.0)/(pi*d.diameter*d.diameter/4);
+        const drum::AxialDispersionResult dz = drum::sherritt2001AxialDispersion(in, d.path.string());
+        to.denseDispersion = dz.Dz;
+        std::ostringstream os;
+        os << "Sherritt 2001 Eq 51 (" << drum::bedRegimeName(dz.regime) << ", n/n_c " << dz.speedRatio
+           << ", X " << dz.fillUsed << ", d_p " << in.particleDiameter*1e6 << " um): D_z " << dz.Dz << " m2/s";
+        dispersionNote = os.str();
+        say("dense dispersion " + dispersionNote);
+        for (const std::string& w : dz.warnings)
+        {
+            say("warning: dense dispersion: " + w);
+        }
+    }
+    const drum::TwoPhaseTracerNetwork net = drum::twoPhaseTracerNetwork(model, r, to);
+    {
+        std::ostringstream os;
+        os << "tracer network: " << net.slices << " slices of " << net.sliceLength << " m"
+           << (net.slicesClamped ? " (automatic slicing clamped to [20, 400])" : "")
+           << ", " << drum::toString(d.rtd.integrator) << " RTD with step " << d.rtd.timeStep << " s";
+        say(os.str());
+        if (to.denseDispersion > 0)
+        {
+            std::ostringstream w;
+            w << "dense dispersion " << to.denseDispersion << " m2/s, upwind part u_2 dz/2 "
+              << net.numericalDenseDispersion << " m2/s, added " << net.effectiveDenseDispersion << " m2/s";
+            say(w.str());
+            if (net.numericalDenseDispersion > to.denseDispersion)
+            {
+                say("warning: the slicing alone disperses more than D_z: refine model.slices to resolve it");
+            }
+        }
+    }
+
+    // Each size class is its own network; the overall E is the feed-weighted
+    // sum, each class run until the recovery (its E is 0 after its end)
+    std::vector<double> time, E;
+    double recovered = 0;
+    std::vector<drum::RtdMoments> classMoments(net.classSystems.size());
+    for (std::size_t k = 0; k < net.classSystems.size(); ++k)
+    {
+        const double x = net.feedFractions[k];
+        if (!(x > 0))
+        {
+            continue;
+        }
+        const drum::RtdResult rk = drum::simulateRtd(net.classSystems[k], d.rtd);
+        for (const std::string& w : rk.warnings)
+        {
+            say("warning: size class " + std::to_string(k) + ": " + w);
+        }
+        if (rk.time.size() > time.size())
+        {
+            time = rk.time;   // same step from 0: the longest grid holds the others
+            E.resize(time.size(), 0.0);
+        }
+        for (std::size_t i = 0; i < rk.time.size(); ++i)
+        {
+            E[i] += x*rk.E[i];
+        }
+        recovered += x*rk.recovered;
+        classMoments[k] = drum::exactMoments(net.classSystems[k], d.rtd.pulseDuration);
+    }
+    const drum::RtdMoments sm = drum::sampledMoments(time, E);
+    const drum::RtdMoments ex = drum::exactMoments(net.system, d.rtd.pulseDuration);
+
+    std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_mean_s",
+        "rtd_std_s", "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
+        "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg", "slices", "dense_dispersion_m2_s",
+        "numerical_dispersion_m2_s"};
+    std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime, sm.mean,
+        sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate,
+        r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
+        net.numericalDenseDispersion};
+    std::optional<drum::RtdMoments> mm;
+    if (measured)
+    {
+        mm = drum::sampledMoments(measured->t, measured->E);
+        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
+        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
+    }
+    drum::CsvTable summary(cols);
+    summary.addRow(row);
     summary.write(out/"summary.csv");
+
+    drum::CsvTable cls({"size_um", "feed_fraction", "holdup_fraction", "T_eq139_s", "network_mean_s", "network_std_s"});
+    for (std::size_t k = 0; k < d.sizes.size(); ++k)
+    {
+        cls.addRow({d.sizes[k]*1e6, net.feedFractions[k], r.holdupFractions[k], r.sizeResidenceTimes[k],
+            net.feedFractions[k] > 0 ? classMoments[k].mean : nan, net.feedFractions[k] > 0 ? classMoments[k].sd() : nan});
+    }
+    cls.write(out/"classes.csv");
 
     drum::CsvTable prof({"x_m", "discharge_angle_deg", "holdup_kg_per_m", "airborne_kg_per_m",
         "airborne_flow_kg_s", "dense_flow_kg_s", "bed_slope_deg"});
@@ -419,6 +597,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
             it->airborneFlow, it->denseFlow, it->bedSlope*180/pi});
     }
     prof.write(out/"profile.csv");
+    writeRtdOutputs(d, time, E, measured, "two-phase network (" + std::to_string(net.slices) + " slices)", out);
     if (!r.profile.empty())
     {
         drum::Plot ph;
@@ -431,7 +610,12 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     }
     std::ostringstream os;
     os << std::setprecision(4) << "holdup " << r.holdup_kg << " kg, airborne " << 100*r.airborne_fraction
-       << " %, mean residence time " << r.meanResidenceTime/60 << " min (no RTD from this model: rtd.csv not written)";
+       << " %, mean residence time " << r.meanResidenceTime/60 << " min (Eq 138; network "
+       << ex.mean/60 << "), RTD SD " << sm.sd()/60 << " min";
+    if (mm)
+    {
+        os << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
+    }
     say(os.str());
 }
 
