@@ -561,12 +561,13 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     const drum::RtdMoments sm = drum::sampledMoments(time, E);
     const drum::RtdMoments ex = drum::exactMoments(net.system, d.rtd.pulseDuration);
 
-    std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_mean_s",
+    // the leading columns are those of the compartment model
+    std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s",
         "rtd_std_s", "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
-        "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg", "slices", "dense_dispersion_m2_s",
+        "rtd_mean_s", "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg", "slices", "dense_dispersion_m2_s",
         "numerical_dispersion_m2_s"};
-    std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime, sm.mean,
-        sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate,
+    std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime,
+        sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate, sm.mean,
         r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
         net.numericalDenseDispersion};
     std::optional<drum::RtdMoments> mm;

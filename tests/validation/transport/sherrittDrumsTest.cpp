@@ -1,7 +1,8 @@
 // Qualitative checks of Sherritt 1991 Ch 5 (digest 6, 8 item 12). The
 // thesis gives no plotted numbers; flight sizes are our assumptions
-// (cases/sherrittDrums/README.md).
-#include "drum/flights/sherrittFlightShapes.hpp"
+// (cases/sherrittDrums/README.md). The flights are built as drumSolver
+// builds them from cases/sherrittDrums/*/drumDict (drum::buildSherrittFlight).
+#include "drum/flights/sherrittFlightSpec.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,13 @@ TEST(SherrittDrums, SheikhTwelve90DegFlightsAirborneShares)
     TwoPhaseCase c;
     c.name = "sheikh";
     c.drum = {0.385, 2.10, 1*deg, 5.7/60, 0.0};
-    c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg);
+    SherrittFlightSpec f;
+    f.type = SherrittFlightType::twoSided;
+    f.count = 12;
+    f.baseLength = 0.04;
+    f.tipLength = 0.04;
+    f.tipAngle = 90*deg;
+    c.exterior = buildSherrittFlight(f, FlightSide::exterior, 0.385, 2.10, 1*deg);
     c.material = {2650, 1517, 35.69*deg, 1.0,
         {600e-6, 427e-6, 327e-6, 256e-6, 168e-6, 88e-6}, {11.6, 21.6, 12.0, 29.6, 22.1, 3.2}};
     const TwoPhaseModel m(c);
@@ -53,7 +60,12 @@ TEST(SherrittDrums, KellyCountercurrentAirRaisesHoldup)
     TwoPhaseCase c;
     c.name = "kelly";
     c.drum = {0.305, 1.69, 2*deg, 8.0/60, 0.0};
-    c.exterior = tabulateSherrittFlight(eadFlightShape(0.305, 0.04, 45.6*deg), 8, 1.69, 1*deg);
+    SherrittFlightSpec f;
+    f.type = SherrittFlightType::ead;
+    f.count = 8;
+    f.radius = 0.04;
+    f.designRepose = 45.6*deg;
+    c.exterior = buildSherrittFlight(f, FlightSide::exterior, 0.305, 1.69, 1*deg);
     c.material = {1147, 591, 45.6*deg, 1.0, {1750e-6}, {1.0}};
     const double F0 = 0.005;
     const auto still = TwoPhaseModel(c).solveConstantHoldup(F0).front();
