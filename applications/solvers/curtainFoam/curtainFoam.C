@@ -20,7 +20,9 @@ Description
     particle phases are pressureless; their momentum is written per unit
     particle volume so it stays well posed where alpha -> 0; drag is
     implicit in both phases through a partial elimination; the slot region
-    (alpha ~ 0.1-0.2) is guarded by alphaMax.
+    (alpha ~ 0.1-0.2) is guarded by alphaMax. Solids transport: implicit
+    upwind, or (MULESCorr in the alpha.* solver dictionary) upwind plus a
+    MULES-limited higher-order correction (bounded, conservative).
 
     Time stepping: transient (Euler ddt, maxCo adjustable step) or, with
     ddtSchemes { default localEuler; }, a pseudo-transient march to the
@@ -40,6 +42,10 @@ Description
 #include "fvcSmooth.H"
 #include "constrainPressure.H"
 #include "constrainHbyA.H"
+#include "CMULES.H"
+#include "EulerDdtScheme.H"
+#include "gaussConvectionScheme.H"
+#include "upwind.H"
 #include "particleClass.H"
 
 #include <cmath>
