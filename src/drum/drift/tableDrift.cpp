@@ -21,8 +21,16 @@ double TableDrift::displacement(const DriftQuery& q) const
     {
         throw InputError("", "drift query fall height", "must be in [0, inf) m");
     }
-    // Level table + free slide down the incline over the same fall time
-    return table_->drift(q) + q.fallHeight*std::sin(q.incline);
+    // Level table + free slide down the incline over the same fall time.
+    // Without gas or without a fall there is no gas drift, exactly (a
+    // curtain in still gas lands symmetrically: tests/foam/curtainNoGas):
+    // no table query, so no clamped answer from the table's lowest V_g
+    const double slide = q.fallHeight*std::sin(q.incline);
+    if (q.gasVelocity == 0 || q.fallHeight == 0)
+    {
+        return slide;
+    }
+    return table_->drift(q) + slide;
 }
 
 

@@ -84,6 +84,25 @@ TEST(TableDrift, TableAndTableVcOnNodes)
 }
 
 
+TEST(TableDrift, StillGasHasNoGasDriftAndNeverQueriesTheTable)
+{
+    // The synthetic grid starts above 0 m/s: a query at V_g = 0 is outside
+    // it, and a refusing table would throw if it were asked
+    const auto f = loneParticleTable("still.csv", [](const synthetic::Point&) { return 0.5; });
+    const auto table = std::make_shared<const DriftTable>(DriftTable::read(f));
+    ASSERT_GT(table->rows().front().x[0], 0.0);
+    const TableDrift td(table);
+    DriftQuery q = query(table->rows().front().x);
+    q.gasVelocity = 0;
+    EXPECT_EQ(td.displacement(q), 0.0);
+    q.incline = 0.03;   // only the free slide down the incline remains
+    EXPECT_NEAR(td.displacement(q), q.fallHeight*std::sin(0.03), 1e-15);
+    // a query with gas outside the grid is still refused
+    q.gasVelocity = 0.5*table->rows().front().x[0];
+    EXPECT_THROW(td.displacement(q), InputError);
+}
+
+
 TEST(PorousSheet, DiluteCurtainIsTheIsolatedParticleDenseShieldsStrongly)
 {
     PorousSheetConstants c;
