@@ -465,6 +465,49 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     {
         say(note);
     }
+    if (r.cappedLength > 0)
+    {
+        std::ostringstream os;
+        os << "warning: the bed slope is held at the cap phi over " << r.cappedLength << " of " << d.length
+           << " m next to the discharge end (Eq 135 asks for more): there Eq 79 does not carry the dense flow of Eq 55";
+        say(os.str());
+    }
+
+    // DRUM1 (constant holdup, Sherritt's driver for Sheikh, Kelly, O'Donnell
+    // and Saeman): the theta_i sweep and every root F0(theta_i) = feed
+    // (digest 5.1, 8 item 8: overloaded drums can have several)
+    drum::CsvTable sweepTable({"theta_i_deg", "regime", "valid", "feed_kg_s", "holdup_kg", "airborne_kg",
+        "discharging_kg", "nondischarging_kg", "airborne_holdup_fraction", "airborne_flow_fraction"});
+    const double kgPerM = d.bulkDensity*d.length;
+    for (double t = std::ceil(model.minDischargeAngle()*180/pi); t <= model.finalDischargeAngle()*180/pi + 1e-9; t += 1)
+    {
+        const drum::TwoPhaseState st = model.atDischargeAngle(t*pi/180);
+        sweepTable.addRow({t, double(static_cast<int>(st.regime)), st.valid ? 1.0 : 0.0,
+            st.valid ? st.feedRate : nan, st.holdup*kgPerM, st.airborneHoldup*kgPerM,
+            st.dischargingHoldup*kgPerM, st.nonDischargingHoldup*kgPerM, st.airborneHoldup/st.holdup,
+            st.valid ? st.airborneFlow/st.feedRate : nan});
+    }
+    drum::CsvTable rootTable({"theta_i_deg", "regime", "holdup_kg", "airborne_fraction", "mean_residence_time_s",
+        "airborne_flow_kg_s", "dense_flow_kg_s"});
+    try
+    {
+        const std::vector<drum::TwoPhaseResult> roots = model.solveConstantHoldup(d.feedRate);
+        std::ostringstream os;
+        os << std::setprecision(4) << "DRUM1 (constant holdup) has " << roots.size() << " root"
+           << (roots.size() > 1 ? "s" : "") << " for " << d.feedRate << " kg/s:";
+        for (const auto& q : roots)
+        {
+            os << " theta_i " << q.dischargeAngle*180/pi << " deg (" << drum::loadingRegimeName(q.regime)
+               << ", " << q.holdup_kg << " kg, airborne " << 100*q.airborne_fraction << " %);";
+            rootTable.addRow({q.dischargeAngle*180/pi, double(static_cast<int>(q.regime)), q.holdup_kg,
+                q.airborne_fraction, q.meanResidenceTime, q.airborneFlow, q.denseFlow});
+        }
+        say(os.str());
+    }
+    catch (const drum::InputError& e)
+    {
+        say(std::string("DRUM1 (constant holdup): no root: ") + e.what());
+    }
 
     // Dense-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51 by
     // regime with X the mean dense holdup over the drum cross-section)
@@ -565,11 +608,11 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s",
         "rtd_std_s", "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
         "rtd_mean_s", "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg", "slices", "dense_dispersion_m2_s",
-        "numerical_dispersion_m2_s"};
+        "numerical_dispersion_m2_s", "capped_slope_length_m"};
     std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime,
         sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate, sm.mean,
         r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
-        net.numericalDenseDispersion};
+        net.numericalDenseDispersion, r.cappedLength};
     std::optional<drum::RtdMoments> mm;
     if (measured)
     {
@@ -598,6 +641,8 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
             it->airborneFlow, it->denseFlow, it->bedSlope*180/pi});
     }
     prof.write(out/"profile.csv");
+    sweepTable.write(out/"sweep.csv");
+    rootTable.write(out/"roots.csv");
     writeRtdOutputs(d, time, E, measured, "two-phase network (" + std::to_string(net.slices) + " slices)", out);
     if (!r.profile.empty())
     {

@@ -882,6 +882,7 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
         TwoPhaseState s;
         double gamma;
         double dHds;
+        bool capped;
     };
     auto evaluate = [&](double H, double s)
     {
@@ -925,6 +926,7 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
             gamma = F2 > denseFlow(e.s, 0.0) ? phi : -phi;
         }
         e.gamma = std::clamp(gamma, -phi, phi);
+        e.capped = !(std::abs(gamma) < phi);  // Eq 79 at |gamma| = phi cannot give F2
         e.dHds = e.gamma*e.s.chord*e.s.slopedSurfaces;  // Eq 134 (z from the discharge end)
         return e;
     };
@@ -964,6 +966,11 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
         const auto k1 = rhs(s, y, &e0);
         r.profile.push_back(profilePoint(e0.s, s));
         r.profile.back().bedSlope = e0.gamma;
+        r.profile.back().slopeCapped = e0.capped;
+        if (e0.capped)
+        {
+            r.cappedLength += h;
+        }
         auto add = [&](const std::vector<double>& kk, double f)
         {
             std::vector<double> out(y);
@@ -985,6 +992,33 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
     rhs(L, y, &eL);
     r.profile.push_back(profilePoint(eL.s, L));
     r.profile.back().bedSlope = eL.gamma;
+    r.profile.back().slopeCapped = eL.capped;
+    if (eL.capped)
+    {
+        // Still at the cap at the feed end: even a bed sloped at phi does
+        // not carry the dense flow Eq 55 needs there, and where the chord
+        // l(theta_i) vanishes Eq 134 stops the holdup rising at all, so the
+        // profile would end at the flights' capacity whatever the feed
+        // (the Sheikh plateau). No steady state: refuse.
+        double maxFeed = 0;
+        double maxAt = 0;
+        for (double t = minDischargeAngle(); t <= finalAngle_; t += case_.options.sweepStep)
+        {
+            const TwoPhaseState st = atDischargeAngle(t);
+            if (st.valid && st.feedRate > maxFeed)
+            {
+                maxFeed = st.feedRate;
+                maxAt = t;
+            }
+        }
+        std::ostringstream os;
+        os << "feed " << feedRate << " kg/s is beyond what the drum can carry: the bed slope is still held at"
+           << " the cap phi = " << phi/deg << " deg at the feed end (Eqs 79, 135; capped over "
+           << r.cappedLength << " of " << L << " m, feed-end theta_i " << eL.s.dischargeAngle/deg
+           << " deg, chord " << eL.s.chord << " m). Without bed slope (DRUM1) the drum carries at most "
+           << maxFeed << " kg/s (theta_i = " << maxAt/deg << " deg)";
+        throw InputError(case_.name, "feedRate", os.str());
+    }
 
     const double intH = y[1];
     r.holdup_kg = rhoB*intH;

@@ -75,6 +75,7 @@ struct TwoPhaseProfilePoint
     double airborneFlow = 0;           //!< F_1, kg/s
     double denseFlow = 0;              //!< F_2, kg/s
     double bedSlope = 0;               //!< gamma, rad (Eq 135, capped at phi)
+    bool slopeCapped = false;          //!< Eq 135 asked for |gamma| > phi: Eq 79 at the cap cannot carry the F_2 of Eq 55
     double circulation = 0;            //!< kg/(s m) into the curtains (TwoPhaseState)
     std::vector<double> airborneCapacity;  //!< A_i = F_1,i/x_d,i, kg/s (Eq 51)
     std::vector<double> holdupFractions;   //!< x_d,i (Eq 53)
@@ -93,6 +94,10 @@ struct TwoPhaseResult
     double dischargeAngle = 0;            //!< theta_i (DRUM1; feed end for axial)
     LoadingRegime regime = LoadingRegime::design;
     std::vector<TwoPhaseProfilePoint> profile;  //!< axial solve only
+    //- Axial solve: drum length [m] over which the bed slope was held at
+    //  the cap |gamma| = phi, i.e. where Eq 79 does not carry the dense flow
+    //  that Eq 55 needs (the dense-phase balance is broken there)
+    double cappedLength = 0;
 };
 
 struct AxialOptions
@@ -124,7 +129,11 @@ public:
 
     //- DRUM3: holdup varying along the drum (horizontal or short drums).
     //  With an imposed dense flow the holdup is constant: returns the
-    //  lowest-holdup constant solution with a flat profile.
+    //  lowest-holdup constant solution with a flat profile. Throws
+    //  drum::InputError (entry feedRate) when the bed slope is still at the
+    //  cap phi at the feed end: no bed slope up to phi carries the feed
+    //  there, so the drum has no steady state for it (the profile would
+    //  stop rising where the chord vanishes, whatever the feed).
     TwoPhaseResult solveAxial(double feedRate, const AxialOptions& options = {}) const;
 
     //- The profile point of a DRUM1 state (constant holdup)

@@ -178,25 +178,123 @@ TEST(TwoPhaseModel, AxialSolveRelaxesToConstantHoldupInALongInclinedDrum)
 
 TEST(TwoPhaseModel, HorizontalDrumIntegratesThroughDesignLoading)
 {
+    // Horizontal, cocurrent air: airborne flow alone carries 0.0635 kg/s at
+    // design loading and 0.0658 kg/s at 140 deg (DRUM1), so a feed of
+    // 0.064 kg/s settles overloaded, through theta_i = pi from the light
+    // discharge end (no weir)
     auto c = sheikhCase(0.0);
+    c.gas.massRate = 0.1;
+    c.gas.direction = GasFlow::cocurrent;
     c.options.axialSteps = 60;
     const TwoPhaseModel m(c);
-    const auto r = m.solveAxial(0.01);
+    const double F0 = 0.064;
+    ASSERT_LT(m.atDischargeAngle(pi).feedRate, F0);
+    const auto r = m.solveAxial(F0);
     // the holdup rises from the discharge end and passes theta_i = pi
     EXPECT_GT(r.profile.front().dischargeAngle, pi);
     EXPECT_LT(r.profile.back().dischargeAngle, pi);
+    EXPECT_FALSE(r.profile.back().slopeCapped);
+    EXPECT_LT(r.cappedLength, 0.1*c.drum.length);
     for (std::size_t k = 1; k < r.profile.size(); ++k)
     {
-        EXPECT_GE(r.profile[k].holdup, r.profile[k - 1].holdup - 1e-12);
-        EXPECT_NEAR(r.profile[k].airborneFlow + r.profile[k].denseFlow, 0.01, 1e-9);
+        EXPECT_NEAR(r.profile[k].airborneFlow + r.profile[k].denseFlow, F0, 1e-9);
     }
-    // step doubling changes the answer by ~1%: the gamma cap at phi makes
-    // the right-hand side non-smooth, so RK4 converges at low order there
+    // upstream it relaxes (gamma -> 0) onto a DRUM1 root of the same feed
+    double nearest = 1e9;
+    for (const auto& q : m.solveConstantHoldup(F0))
+    {
+        nearest = std::min(nearest, std::abs(q.dischargeAngle - r.profile.back().dischargeAngle));
+    }
+    EXPECT_LT(nearest, 1*deg);
+    // step doubling: the gamma cap next to the discharge end makes the
+    // right-hand side non-smooth, so RK4 converges at low order there
     c.options.axialSteps = 120;
-    const auto r2 = TwoPhaseModel(c).solveAxial(0.01);
+    const auto r2 = TwoPhaseModel(c).solveAxial(F0);
     EXPECT_NEAR(r.meanResidenceTime, r2.meanResidenceTime, 0.03*r2.meanResidenceTime);
-    // horizontal: no DRUM1 flow without gas and without bed slope
-    EXPECT_THROW(m.solveConstantHoldup(0.01), InputError);
+    // without gas only the bed slope carries solids: DRUM1 has no flow, and
+    // near design loading (N_ex,s -> 1) even gamma = phi carries less than
+    // 0.01 kg/s, so the axial solve refuses instead of running at the cap
+    auto still = sheikhCase(0.0);
+    still.options.axialSteps = 60;
+    const TwoPhaseModel ms(still);
+    EXPECT_THROW(ms.solveConstantHoldup(0.01), InputError);
+    EXPECT_THROW(ms.solveAxial(0.01), InputError);
+}
+
+TEST(TwoPhaseModel, UnderloadedHoldupsFromDischargeMomentsByHand)
+{
+    // Independent of the model's integrators: for an open underloaded drum
+    // the dense holdup of Eqs 97, 101/102, 116, 126 reduces to
+    // H_2 = N V (u - pi)/pi, with V = 1/2 int l^2 the load discharged per
+    // flight and revolution and u its discharge-weighted mean angle (the
+    // receiving arc mirrors the discharging one); Eq 91 gives
+    // H_1 = n N V t, t the discharge-weighted fall time sqrt(2 y/g) of
+    // Eq 92. So H_1/H_2 = n t pi/(u - pi): proportional to the speed.
+    // Sums by Simpson on l(theta) and Eq 92 written out here.
+    const auto c = sheikhCase();
+    const SherrittFlightSurface fl(*c.exterior, c.material.repose);
+    const double Do = 0.385;
+    const double Dex = c.exterior->tipDiameter();
+    auto y = [&](double t) { return 0.5*Do*(std::sin(std::acos(Dex/Do*std::cos(t))) - Dex/Do*std::sin(t)); };
+    const double N = 12;
+    for (double ti : {200*deg, 230*deg, 260*deg})
+    {
+        double m0 = 0, m1 = 0, mt = 0;
+        const int K = 40000;
+        for (int k = 0; k <= K; ++k)
+        {
+            const double t = ti + (2*pi - ti)*k/K;
+            const double w = (k == 0 || k == K) ? 1 : (k % 2 ? 4 : 2);
+            const double l2 = std::pow(fl.length(t), 2);
+            m0 += w*l2;
+            m1 += w*l2*t;
+            mt += w*l2*std::sqrt(2*y(t)/9.81);
+        }
+        const double V = 0.5*m0*(2*pi - ti)/K/3;
+        const double u = m1/m0;
+        const double tbar = mt/m0;
+        for (double rpm : {5.7, 12.0})
+        {
+            auto cc = c;
+            cc.drum.speed = rpm/60;
+            const auto s = TwoPhaseModel(cc).atDischargeAngle(ti);
+            const double H2 = N*V*(u - pi)/pi;
+            const double H1 = rpm/60*N*V*tbar;
+            EXPECT_NEAR(s.dischargingHoldup + s.nonDischargingHoldup, H2, 1e-4*H2) << ti/deg;
+            EXPECT_NEAR(s.airborneHoldup, H1, 1e-4*H1) << ti/deg << " " << rpm;
+        }
+    }
+}
+
+TEST(TwoPhaseModel, AxialSolveRefusesAFeedBeyondWhatTheDrumCarries)
+{
+    // Sheikh drum at 1 deg: DRUM1 carries at most ~0.025 kg/s. Beyond it the
+    // axial solve used to hold gamma at the cap phi along the whole drum and
+    // stop where the chord l(theta_i) vanishes: the same ~39 kg for every
+    // feed of 0.04-0.1 kg/s (a plateau). Eq 79 at gamma = phi then carries
+    // less than the F2 of Eq 55: no steady state, so it must refuse.
+    const TwoPhaseModel m(sheikhCase());
+    auto msg = [&](double F) {
+        try { m.solveAxial(F); } catch (const InputError& e) { return std::string(e.what()); }
+        return std::string("no error");
+    };
+    for (double F : {0.04, 0.1})
+    {
+        const std::string e = msg(F);
+        EXPECT_NE(e.find("beyond what the drum can carry"), std::string::npos) << F << ": " << e;
+        EXPECT_THROW(m.solveConstantHoldup(F), InputError);
+    }
+    // within capacity: the holdup rises with the feed, the cap (if any)
+    // only next to the discharge end, and the feed end relaxes to DRUM1
+    const auto a = m.solveAxial(0.01);
+    const auto b = m.solveAxial(0.02);
+    EXPECT_GT(b.holdup_kg, 1.2*a.holdup_kg);
+    for (const auto* r : {&a, &b})
+    {
+        EXPECT_LT(r->cappedLength, 0.1*2.10);
+        EXPECT_FALSE(r->profile.back().slopeCapped);
+        EXPECT_NEAR(r->dischargeAngle, m.solveConstantHoldup(r->feedRate).front().dischargeAngle, 0.5*deg);
+    }
 }
 
 TEST(TwoPhaseModel, RefusesBadInput)

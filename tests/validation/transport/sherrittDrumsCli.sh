@@ -8,6 +8,9 @@
 #     the axial flow airborne (60-95 %)
 #   Kelly: countercurrent air raises the holdup
 #   Saeman: the air rate has little effect on the holdup
+#   Sheikh DRUM1 sweep: inflection of H(theta_i) at design loading, 3/4 of
+#     the flow airborne underloaded, every root reported, H_1 ~ speed, and a
+#     feed beyond what the drum carries refused
 #   Kamke: imposing F_2 (Fig 5.30) shrinks the spread of T_i with size
 # and bad Sherritt-flight input stops with an InputError.
 # Usage: sherrittDrumsCli.sh DRUMSOLVER CASES_DIR WORK_DIR
@@ -61,6 +64,35 @@ s="$work/sheikh/results/summary.csv"
 check "h > 0.02 && h < 0.15" "Sheikh airborne holdup fraction outside 2-15 %" -v h="$(col "$s" airborne_fraction)"
 check "f/0.02 > 0.6 && f/0.02 < 0.95" "Sheikh airborne share of the flow outside 60-95 %" -v f="$(col "$s" airborne_flow_kg_s)"
 grep -q "feedRate: 0.02 " "$work/sheikh/drumDict" || fail "Sheikh feed changed: update the flow-share check"
+# DRUM1 sweep (results/sweep.csv, 1 deg steps): an inflection of H(theta_i)
+# at design loading: |dH/dtheta_i| at pi well below its values 20 deg either side
+sw="$work/sheikh/results/sweep.csv"
+awk -F, 'NR>1 { H[$1+0] = $5 } END {
+    s0 = (H[181] - H[179])/2; sl = (H[161] - H[159])/2; sh = (H[201] - H[199])/2
+    printf "Sheikh dH/dtheta_i (kg/deg): %.4f at 160, %.4f at 180, %.4f at 200\n", sl, s0, sh
+    m = (-sl < -sh) ? -sl : -sh
+    exit !(sl < 0 && sh < 0 && s0 <= 0 && -s0 < 0.6*m) }' "$sw" || fail "Sheikh: no inflection of H(theta_i) at design loading"
+# about 3/4 of the flow airborne when underloaded or slightly overloaded (150-270 deg)
+awk -F, 'NR>1 && $1 >= 150 && $1 <= 270 { n++; if (!($3 == 1 && $10 > 0.65 && $10 < 0.9)) { print "theta_i " $1 ": F1/F0 " $10; bad = 1 } } END { exit bad || n < 100 }' "$sw" \
+    || fail "Sheikh: airborne share of the DRUM1 flow outside 65-90 % over theta_i 150-270 deg"
+# every DRUM1 root is reported (here an underloaded and a buried one), and
+# the axial solve relaxes onto the lowest-holdup root at the feed end
+check "n >= 2" "Sheikh: DRUM1 roots not all reported" -v n="$(($(wc -l < "$work/sheikh/results/roots.csv") - 1))"
+check "(a - b)^2 < 1" "Sheikh: feed-end theta_i is not the DRUM1 root" \
+    -v a="$(col "$work/sheikh/results/summary.csv" discharge_angle_deg)" -v b="$(col "$work/sheikh/results/roots.csv" theta_i_deg)"
+# H_1 is proportional to the speed, H_2 is geometry (Eqs 91, 126): at 12 rpm
+# H_1/H_2 is 12/5.7 times that at 5.7 rpm, at every theta_i
+runcase sheikh12 sheikh 's/speed_rpm: 5.7/speed_rpm: 12/'
+awk -F, 'NR>1 && $1 > 180 {print $1 "," $6/($7+$8)}' "$sw" | sort > "$work/h5.csv"
+awk -F, 'NR>1 && $1 > 180 {print $1 "," $6/($7+$8)}' "$work/sheikh12/results/sweep.csv" | sort > "$work/h12.csv"
+join -t, "$work/h5.csv" "$work/h12.csv" \
+    | awk -F, '{ n++; r = $3/$2/(12/5.7) - 1; if (r*r > 1e-6) bad = 1 } END { exit bad || n < 100 }' \
+    || fail "Sheikh: H_1/H_2 does not scale with the speed"
+# a feed beyond what the drum carries is refused (it used to give the same
+# ~39 kg for 0.04-0.1 kg/s: the bed slope held at phi along the whole drum)
+mkdir -p "$work/sheikhOver"; sed 's/feedRate: 0.02 /feedRate: 0.04 /' "$src/sheikh/drumDict" > "$work/sheikhOver/drumDict"
+if "$solver" -case "$work/sheikhOver" > "$work/sheikhOver/log" 2>&1; then fail "Sheikh 0.04 kg/s accepted"; fi
+grep -q "beyond what the drum can carry" "$work/sheikhOver/log" || { cat "$work/sheikhOver/log"; fail "Sheikh 0.04 kg/s: wrong error"; }
 
 # Kelly: countercurrent air raises the holdup
 runcase kellyNoAir kelly 's/massRate: 0.02/massRate: 0.0/'
@@ -76,7 +108,10 @@ for v in saemanLow saemanHigh; do
 done
 
 # Kamke: imposing F_2 = 0.18 kg/s narrows the spread of T_i with size
-runcase kamkeFree kamke 's/, imposedDenseFlow: 0.18//'
+# (free: at 0.25 kg/s, the most the free model carries is 0.254 kg/s; at
+# Kamke's 0.27 kg/s it has no steady state and is refused)
+runcase kamkeFree kamke 's/, imposedDenseFlow: 0.18//; s/feedRate: 0.27 /feedRate: 0.25 /'
+grep -q "feedRate: 0.25 " "$work/kamkeFree/drumDict" || fail "could not set the Kamke free feed"
 spread() { awk -F, 'NR>1 && $2 > 0 { if (!mx || $4 > mx) mx = $4; if (!mn || $4 < mn) mn = $4 } END { print mx/mn }' "$1"; }
 check "a < 0.5*b" "Kamke: imposed F_2 does not narrow the size spread of T_i" \
     -v a="$(spread "$work/kamke/results/classes.csv")" -v b="$(spread "$work/kamkeFree/results/classes.csv")"
