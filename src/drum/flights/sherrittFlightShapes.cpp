@@ -273,7 +273,13 @@ SherrittFlightProfile tabulateSherrittFlight
         const Vec tip = world.back();
         const Vec u = world[np - 2] - tip;
         double length = 0;
-        if (!(u.y() > 1e-12*u.norm()))
+        // Held if the flight edge at the tip runs down from the tip (a
+        // pocket), or if the tip is below the drum axis: then the material
+        // under the line is carried by the shell below, the overload bed in
+        // the drum bottom whose surface passes the first discharging tip
+        // (Sherritt 1991 Fig 3.1b/c, the surface of Eqs 77/84/85)
+        const bool belowAxis = tip.y() < 0;
+        if (!(u.y() > 1e-12*u.norm()) || belowAxis)
         {
             // horizontal line from the tip towards -x: nearest obstacle
             const double x0 = tip.x();

@@ -13,7 +13,11 @@
 //    rotation over the upper half where flights discharge (digest 2.3);
 //  * the material below it is held only if the flight edge at the tip runs
 //    downwards from the tip (otherwise material would slide off the tip):
-//    the length is then 0;
+//    the length is then 0, unless the tip is below the drum axis: there
+//    the shell below carries the material, the overload bed of an
+//    overloaded drum (Sherritt 1991 Fig 3.1b/c), and the line is the bed
+//    surface through the tip of the first discharging flight, running to
+//    the shell (or a flight) across the drum bottom;
 //  * otherwise the length is the distance to the first wall or flight the
 //    line meets: the shell, this flight, or (interference) the other N-1
 //    flights.

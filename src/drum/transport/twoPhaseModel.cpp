@@ -365,7 +365,12 @@ void TwoPhaseModel::holdups(double thetaI, double psiI, TwoPhaseState& s) const
         }
         ndEx = integrate(hnd, 0.0, thetaI, within(brk, 0.0, thetaI));
     }
-    const double disEx = 0.5*ex_.iteratedDischarge(thetaI, E);  // int_theta_i^2pi h (Eq 97)
+    // Discharging exterior flights, int h (Eq 97) over theta_i..2 pi as
+    // Eq 122, buried flights included: with theta_i below the flights'
+    // pocket range l is the bed chord (tabulateSherrittFlight), and a buried
+    // flight's h is the share of the bed its own surface sheds (the line
+    // stops at the next flight), so flights + bed are counted once each
+    const double disEx = 0.5*ex_.iteratedDischarge(thetaI, E);
 
     double ndIn = 0;
     double disIn = 0;

@@ -79,6 +79,31 @@ TEST(SherrittFlightShapes, RadialPlateMatchesClosedForm)
     }
 }
 
+TEST(SherrittFlightShapes, OverloadBedChordBelowTheAxis)
+{
+    // Sheikh's 90 deg two-sided flight: with the tip low in the drum the tip
+    // plate rises from the tip, so the pocket holds nothing of its own, but
+    // the material under the horizontal through the tip lies on the shell:
+    // the overload bed (Sherritt 1991 Fig 3.1c). Its surface runs from the
+    // tip to the shell: R cos a + sqrt(Ro^2 - R^2 sin^2 a) (no interference).
+    const double D = 0.385;
+    const double Ro = 0.5*D;
+    const auto shape = twoSidedFlightShape(D, 0.04, 0.04, 90*deg);
+    const auto prof = tabulateSherrittFlight(shape, 12, 2.1, 1*deg, false);
+    const double R = 0.5*shape.tipDiameter();
+    for (double a = 10*deg; a < 100.5*deg; a += 10*deg)
+    {
+        const Eigen::Vector2d tip = world(shape.points.back(), a);
+        const Eigen::Vector2d p1 = world(shape.points[1], a);
+        if (!(p1.y() > tip.y())) continue;  // only where the tip plate rises
+        const double expect = R*std::cos(a) + std::sqrt(Ro*Ro - R*R*std::sin(a)*std::sin(a));
+        EXPECT_NEAR(prof.horizontalLength(a), expect, 1e-9) << a/deg;
+    }
+    EXPECT_GT(prof.horizontalLength(40*deg), 5*0.04);  // across the drum, not a pocket
+    // above the axis a rising tip plate still holds nothing (flight empty)
+    EXPECT_EQ(prof.horizontalLength(355*deg), 0.0);
+}
+
 TEST(SherrittFlightShapes, HoldupFromDischargeEqualsPocketArea)
 {
     // Sherritt's key idea (digest 2.3): integrating the discharge gives the

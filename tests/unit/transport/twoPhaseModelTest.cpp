@@ -1,6 +1,7 @@
 // Sherritt 1991 two-phase model: analytic EAD results, mass balances,
 // closed forms of the digest, DRUM1 inversion, axial solve, bad input.
 #include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
 
@@ -211,14 +212,26 @@ TEST(TwoPhaseModel, HorizontalDrumIntegratesThroughDesignLoading)
     c.options.axialSteps = 120;
     const auto r2 = TwoPhaseModel(c).solveAxial(F0);
     EXPECT_NEAR(r.meanResidenceTime, r2.meanResidenceTime, 0.03*r2.meanResidenceTime);
-    // without gas only the bed slope carries solids: DRUM1 has no flow, and
-    // near design loading (N_ex,s -> 1) even gamma = phi carries less than
-    // 0.01 kg/s, so the axial solve refuses instead of running at the cap
+    // without gas only the bed slope carries solids (Eq 79, alpha = 0):
+    // DRUM1 has no flow. Near design loading (N_ex,s -> 1) even gamma = phi
+    // carries less than 0.01 kg/s; the holdup then rises along the drum into
+    // overload, where the bed surface (chord across the drum bottom) is long
+    // enough for a bed slope below phi to carry the feed: all of it dense
     auto still = sheikhCase(0.0);
     still.options.axialSteps = 60;
     const TwoPhaseModel ms(still);
     EXPECT_THROW(ms.solveConstantHoldup(0.01), InputError);
-    EXPECT_THROW(ms.solveAxial(0.01), InputError);
+    const auto rs = ms.solveAxial(0.01);
+    const auto& feedEnd = rs.profile.back();
+    EXPECT_LT(feedEnd.dischargeAngle, pi);
+    EXPECT_FALSE(feedEnd.slopeCapped);
+    EXPECT_GT(feedEnd.bedSlope, 0.0);
+    EXPECT_LT(feedEnd.bedSlope, 35.69*deg);
+    for (const auto& q : rs.profile)
+    {
+        EXPECT_NEAR(q.denseFlow, 0.01, 1e-9);
+        EXPECT_NEAR(q.airborneFlow, 0.0, 1e-9);
+    }
 }
 
 TEST(TwoPhaseModel, UnderloadedHoldupsFromDischargeMomentsByHand)
@@ -266,24 +279,39 @@ TEST(TwoPhaseModel, UnderloadedHoldupsFromDischargeMomentsByHand)
     }
 }
 
-TEST(TwoPhaseModel, AxialSolveRefusesAFeedBeyondWhatTheDrumCarries)
+TEST(TwoPhaseModel, AxialSolveCarriesOverloadAndRefusesBeyondCapacity)
 {
-    // Sheikh drum at 1 deg: DRUM1 carries at most ~0.025 kg/s. Beyond it the
-    // axial solve used to hold gamma at the cap phi along the whole drum and
-    // stop where the chord l(theta_i) vanishes: the same ~39 kg for every
-    // feed of 0.04-0.1 kg/s (a plateau). Eq 79 at gamma = phi then carries
-    // less than the F2 of Eq 55: no steady state, so it must refuse.
+    // Sheikh drum at 1 deg. Before the overload bed was tabulated the flight
+    // table ended at ~137 deg, DRUM1 carried at most ~0.025 kg/s and 0.04-0.1
+    // kg/s were refused. With the bed chord the dense flow rises steeply into
+    // overload (Sherritt 1991 Fig 5.4): those feeds have a steady state, in
+    // an overloaded or buried drum, heavier than any underloaded holdup.
     const TwoPhaseModel m(sheikhCase());
+    const double full = 0.25*pi*0.385*0.385*2.10*1517;  // drum filled, kg
+    const auto design = m.atDischargeAngle(pi);
+    for (double F : {0.04, 0.1})
+    {
+        const auto roots = m.solveConstantHoldup(F);
+        ASSERT_FALSE(roots.empty()) << F;
+        EXPECT_LT(roots.front().dischargeAngle, pi) << F;
+        const auto r = m.solveAxial(F);
+        EXPECT_LT(r.dischargeAngle, pi) << F;
+        EXPECT_GT(r.holdup_kg, design.holdup*2.10*1517) << F;
+        EXPECT_LT(r.holdup_kg, full) << F;
+        EXPECT_FALSE(r.profile.back().slopeCapped) << F;
+    }
+    // far beyond what even the buried drum carries over the sweep: refused
     auto msg = [&](double F) {
         try { m.solveAxial(F); } catch (const InputError& e) { return std::string(e.what()); }
         return std::string("no error");
     };
-    for (double F : {0.04, 0.1})
+    double most = 0;
+    for (const auto& s : m.sweep(m.minDischargeAngle(), m.finalDischargeAngle(), 200))
     {
-        const std::string e = msg(F);
-        EXPECT_NE(e.find("beyond what the drum can carry"), std::string::npos) << F << ": " << e;
-        EXPECT_THROW(m.solveConstantHoldup(F), InputError);
+        if (s.valid) most = std::max(most, s.feedRate);
     }
+    EXPECT_THROW(m.solveConstantHoldup(2*most), InputError);
+    EXPECT_NE(msg(2*most).find("cannot carry"), std::string::npos) << msg(2*most);
     // within capacity: the holdup rises with the feed, the cap (if any)
     // only next to the discharge end, and the feed end relaxes to DRUM1
     const auto a = m.solveAxial(0.01);
@@ -294,6 +322,101 @@ TEST(TwoPhaseModel, AxialSolveRefusesAFeedBeyondWhatTheDrumCarries)
         EXPECT_LT(r->cappedLength, 0.1*2.10);
         EXPECT_FALSE(r->profile.back().slopeCapped);
         EXPECT_NEAR(r->dischargeAngle, m.solveConstantHoldup(r->feedRate).front().dischargeAngle, 0.5*deg);
+    }
+}
+
+TEST(TwoPhaseModel, BuriedFlightsSurfaceIsTheBedChordAndDenseFlowRisesSteeply)
+{
+    // Sheikh's flights without interference, so the bed surface through the
+    // first discharging tip runs to the shell: l(theta_i) = R cos a +
+    // sqrt(Ro^2 - R^2 sin^2 a), a = theta_i - phi (surface at phi, digest 2.3)
+    auto c = sheikhCase();
+    c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg, false);
+    const TwoPhaseModel m(c);
+    const double phi = 35.69*deg;
+    const double Ro = 0.1925;
+    const double R = 0.5*c.exterior->tipDiameter();
+    const double n = 5.7/60;
+    const double alpha = 1*deg;
+    for (double thetaI : {50*deg, 80*deg, 110*deg, 130*deg})
+    {
+        const auto s = m.atDischargeAngle(thetaI);
+        const double a = thetaI - phi;
+        const double chord = R*std::cos(a) + std::sqrt(Ro*Ro - R*R*std::sin(a)*std::sin(a));
+        EXPECT_NEAR(s.chord, chord, 1e-3*chord) << thetaI/deg;
+        EXPECT_EQ(s.slopedSurfaces, 1.0);  // Eq 84
+        // Eq 86: F2 at least its sloped-surface term by hand
+        EXPECT_GE(s.denseFlow, n*1517*alpha/(6*std::sin(phi))*pi*chord*chord*chord*(1 - 1e-3));
+        EXPECT_EQ(s.regime, thetaI <= phi + 0.5*pi ? LoadingRegime::buried : LoadingRegime::overloaded);
+    }
+    // "The movement in the dense phase increases dramatically when the drum
+    // is extremely overloaded" (Sherritt 1991 §5.1.2): well above the
+    // design-loaded F2, and holdup rising all the way into the buried range
+    const double F2design = m.atDischargeAngle(pi).denseFlow;
+    EXPECT_GT(m.atDischargeAngle(60*deg).denseFlow, 10*F2design);
+    double last = 0;
+    for (double t = 175*deg; t >= 40*deg; t -= 5*deg)
+    {
+        const double H = m.holdupAt(t);
+        EXPECT_GT(H, last) << t/deg;
+        last = H;
+    }
+}
+
+TEST(TwoPhaseModel, OverloadHoldupIsBedPlusFlights)
+{
+    // Mass check on Sheikh's drum (with interference, as drumSolver): at a
+    // buried theta_i everything under the bed surface through the first
+    // discharging tip is solids. That tip sits somewhere in [theta_i,
+    // theta_i + 2 pi/N]; the bed is the circular segment of the shell cut by
+    // the surface line at distance d = R sin(theta - phi) from the axis,
+    // Ro^2 acos(d/Ro) - d sqrt(Ro^2 - d^2). So H_2 lies between the segment
+    // averaged over that spacing and the segment at theta_i plus what every
+    // flight holds when full (its pocket at design loading, Eq 97).
+    const TwoPhaseModel m(sheikhCase());
+    const auto c = sheikhCase();
+    const double phi = 35.69*deg;
+    const double Ro = 0.1925;
+    const double R = 0.5*c.exterior->tipDiameter();
+    const int N = 12;
+    const SherrittFlightSurface surf(*c.exterior, phi);
+    auto segment = [&](double theta) {
+        const double d = R*std::sin(theta - phi);
+        return Ro*Ro*std::acos(d/Ro) - d*std::sqrt(Ro*Ro - d*d);
+    };
+    for (double thetaI : {45*deg, 60*deg, 80*deg, 100*deg})
+    {
+        const auto s = m.atDischargeAngle(thetaI);
+        const double H2 = s.dischargingHoldup + s.nonDischargingHoldup;
+        double mean = 0;
+        const int K = 600;
+        for (int k = 0; k < K; ++k)
+        {
+            mean += segment(thetaI + (k + 0.5)/K*2*pi/N)/K;
+        }
+        EXPECT_GT(H2, mean) << thetaI/deg;
+        EXPECT_LT(H2, segment(thetaI) + N*surf.holdupVolume(pi)) << thetaI/deg;
+    }
+}
+
+TEST(TwoPhaseModel, TinyFlightsBedHoldupIsTheCircularSegment)
+{
+    // Vanishing radial flights (a drum almost without flights, digest 5.3):
+    // the surface through the tip at theta - phi runs to the shell, and
+    // Sherritt's holdup of that flight, 1/2 int l^2 (Eq 97), is the circular
+    // segment under it: d/dtheta of the segment area is -l^2/2 with the
+    // pivot on the shell (independent geometry)
+    const double D = 1.0;
+    const double len = 1e-3;
+    const double phi = 35*deg;
+    const SherrittFlightSurface s(tabulateSherrittFlight(straightRadialFlightShape(D, len), 1, 1.0, 0.25*deg, false), phi);
+    const double Ro = 0.5*D;
+    const double R = Ro - len;
+    for (double theta = 45*deg; theta <= 120*deg; theta += 15*deg)
+    {
+        const double d = R*std::sin(theta - phi);
+        const double seg = Ro*Ro*std::acos(d/Ro) - d*std::sqrt(Ro*Ro - d*d);
+        EXPECT_NEAR(s.holdupVolume(theta), seg, 5e-3*seg + 1e-4) << theta/deg;
     }
 }
 
