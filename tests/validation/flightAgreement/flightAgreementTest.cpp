@@ -388,7 +388,9 @@ TEST(FlightAgreement, BeforePsi1TheDescriptionsPart)
     // is not about it either: his horizontal line runs on past the next
     // flight (l longer than the tip chord), or, while the tip plate is still
     // flatter than phi (possible below psi1 only, LeeFlight's constructor
-    // check), his rule gives l = 0 (material would slide off the tip). Above
+    // check), his rule gives l = 0 (material would slide off the tip) with
+    // the tip above the drum axis, and the overload bed's surface (across
+    // the drum bottom, longer than the tip chord) with it below. Above
     // psi1 the next tip is above the line and the surface ends on that
     // flight's back, shorter than the chord.
     for (const Case& c : cases())
@@ -423,7 +425,16 @@ TEST(FlightAgreement, BeforePsi1TheDescriptionsPart)
             EXPECT_EQ(lee.discharge(psi), 0.0);
             EXPECT_EQ(lee.holdup(psi), lee.maxHoldup());
             const double l = sherritt.length(thetaOf(f, psi));
-            if (aboveSurface(f.elbowPosition(psi), psi))
+            const double a = thetaOf(f, psi) - phi;  // table angle
+            if (aboveSurface(f.elbowPosition(psi), psi) && std::sin(a) > 0)
+            {
+                // tip below the axis in the table's frame: the material under
+                // the line rests on the shell (overload bed, Sherritt Fig
+                // 3.1c), the surface runs across the drum bottom
+                EXPECT_GT(l, f.tipChord()) << "psi " << psi << ": overload bed";
+                ++overtopping;
+            }
+            else if (aboveSurface(f.elbowPosition(psi), psi))
             {
                 EXPECT_EQ(l, 0.0) << "psi " << psi << ": tip plate flatter than phi";
             }

@@ -9,8 +9,10 @@
 #   Kelly: countercurrent air raises the holdup
 #   Saeman: the air rate has little effect on the holdup
 #   Sheikh DRUM1 sweep: inflection of H(theta_i) at design loading, 3/4 of
-#     the flow airborne underloaded, every root reported, H_1 ~ speed, and a
-#     feed beyond what the drum carries refused
+#     the flow airborne underloaded, H_1 ~ speed; into overload (the bed in
+#     the drum bottom) the holdup keeps rising and the dense flow rises
+#     steeply (Fig 5.4), an overloaded feed is carried, one feed has several
+#     DRUM1 roots (all reported), and a feed beyond the sweep is refused
 #   Kamke: imposing F_2 (Fig 5.30) shrinks the spread of T_i with size
 # and bad Sherritt-flight input stops with an InputError.
 # Usage: sherrittDrumsCli.sh DRUMSOLVER CASES_DIR WORK_DIR
@@ -75,9 +77,8 @@ awk -F, 'NR>1 { H[$1+0] = $5 } END {
 # about 3/4 of the flow airborne when underloaded or slightly overloaded (150-270 deg)
 awk -F, 'NR>1 && $1 >= 150 && $1 <= 270 { n++; if (!($3 == 1 && $10 > 0.65 && $10 < 0.9)) { print "theta_i " $1 ": F1/F0 " $10; bad = 1 } } END { exit bad || n < 100 }' "$sw" \
     || fail "Sheikh: airborne share of the DRUM1 flow outside 65-90 % over theta_i 150-270 deg"
-# every DRUM1 root is reported (here an underloaded and a buried one), and
-# the axial solve relaxes onto the lowest-holdup root at the feed end
-check "n >= 2" "Sheikh: DRUM1 roots not all reported" -v n="$(($(wc -l < "$work/sheikh/results/roots.csv") - 1))"
+# the axial solve relaxes onto the lowest-holdup DRUM1 root at the feed end
+check "n >= 1" "Sheikh: no DRUM1 root reported" -v n="$(($(wc -l < "$work/sheikh/results/roots.csv") - 1))"
 check "(a - b)^2 < 1" "Sheikh: feed-end theta_i is not the DRUM1 root" \
     -v a="$(col "$work/sheikh/results/summary.csv" discharge_angle_deg)" -v b="$(col "$work/sheikh/results/roots.csv" theta_i_deg)"
 # H_1 is proportional to the speed, H_2 is geometry (Eqs 91, 126): at 12 rpm
@@ -88,11 +89,39 @@ awk -F, 'NR>1 && $1 > 180 {print $1 "," $6/($7+$8)}' "$work/sheikh12/results/swe
 join -t, "$work/h5.csv" "$work/h12.csv" \
     | awk -F, '{ n++; r = $3/$2/(12/5.7) - 1; if (r*r > 1e-6) bad = 1 } END { exit bad || n < 100 }' \
     || fail "Sheikh: H_1/H_2 does not scale with the speed"
-# a feed beyond what the drum carries is refused (it used to give the same
-# ~39 kg for 0.04-0.1 kg/s: the bed slope held at phi along the whole drum)
-mkdir -p "$work/sheikhOver"; sed 's/feedRate: 0.02 /feedRate: 0.04 /' "$src/sheikh/drumDict" > "$work/sheikhOver/drumDict"
-if "$solver" -case "$work/sheikhOver" > "$work/sheikhOver/log" 2>&1; then fail "Sheikh 0.04 kg/s accepted"; fi
-grep -q "beyond what the drum can carry" "$work/sheikhOver/log" || { cat "$work/sheikhOver/log"; fail "Sheikh 0.04 kg/s: wrong error"; }
+# Overload (theta_i < pi) and buried flights (theta_i <= phi + pi/2): the
+# sweep goes on below the flights' pocket range (it used to end at ~137 deg,
+# l = 0), the holdup rises at every step as theta_i falls, and "the movement
+# in the dense phase increases dramatically when the drum is extremely
+# overloaded" (Sherritt 1991 5.1.2): F_2 = F_0 (1 - F_1/F_0) at 60 deg more
+# than 10 times, at 100 deg more than twice, its design-loaded value
+awk -F, 'NR>1 { t = $1+0; ok[t] = $3; H[t] = $5; F2[t] = $4*(1 - $10) } END {
+    for (t = 179; t >= 40; t--) { if (!ok[t] || !(H[t] > H[t+1])) { print "theta_i " t ": valid " ok[t] ", H " H[t] " after " H[t+1]; exit 1 } }
+    printf "Sheikh F_2 (kg/s): %.5f at 180, %.5f at 100, %.5f at 60 deg\n", F2[180], F2[100], F2[60]
+    exit !(F2[60] > 10*F2[180] && F2[100] > 2*F2[180]) }' "$sw" \
+    || fail "Sheikh: holdup not rising or dense flow not rising steeply into overload"
+# an overloaded feed is carried (it used to be refused: the table ended),
+# heavier than the underloaded 0.02 kg/s drum, the feed end overloaded
+runcase sheikhOver sheikh 's/feedRate: 0.02 /feedRate: 0.04 /'
+check "t < 180 && h > h0" "Sheikh 0.04 kg/s: not an overloaded, heavier drum" \
+    -v t="$(col "$work/sheikhOver/results/summary.csv" discharge_angle_deg)" \
+    -v h="$(col "$work/sheikhOver/results/summary.csv" holdup_kg)" -v h0="$(col "$s" holdup_kg)"
+# where F_0(theta_i) is not monotone in the buried range (Fig 5.4: "the
+# same flow rate occurs for different initial discharge angles") every
+# DRUM1 root is reported: the feed half-way between a local minimum of
+# F_0 below 90 deg and the local maximum above it in theta_i
+feedMulti="$(awk -F, 'NR>1 { t[NR] = $1+0; f[NR] = $4+0; n = NR } END {
+    for (k = 3; k < n; k++) if (t[k] < 90 && f[k] < f[k-1] && f[k] < f[k+1]) {
+        lo = f[k]; for (j = k; j < n && f[j+1] > f[j]; j++); hi = f[j]; pick = 0.5*(lo + hi) }
+    if (pick > 0) printf "%.6f", pick }' "$sw")"
+[ -n "$feedMulti" ] || fail "Sheikh: F_0(theta_i) is monotone below 90 deg: no several-root feed to check"
+runcase sheikhMulti sheikh "s/feedRate: 0.02 /feedRate: $feedMulti /"
+check "n >= 2" "Sheikh $feedMulti kg/s: several DRUM1 roots not all reported" -v n="$(($(wc -l < "$work/sheikhMulti/results/roots.csv") - 1))"
+# a feed beyond the largest DRUM1 flow of the sweep is refused
+feedOver="$(awk -F, 'NR>1 && $4 > m { m = $4 } END { printf "%.6f", 2*m }' "$sw")"
+mkdir -p "$work/sheikhBeyond"; sed "s/feedRate: 0.02 /feedRate: $feedOver /" "$src/sheikh/drumDict" > "$work/sheikhBeyond/drumDict"
+if "$solver" -case "$work/sheikhBeyond" > "$work/sheikhBeyond/log" 2>&1; then fail "Sheikh $feedOver kg/s accepted"; fi
+grep -q "cannot carry" "$work/sheikhBeyond/log" || { cat "$work/sheikhBeyond/log"; fail "Sheikh $feedOver kg/s: wrong error"; }
 
 # Kelly: countercurrent air raises the holdup
 runcase kellyNoAir kelly 's/massRate: 0.02/massRate: 0.0/'
