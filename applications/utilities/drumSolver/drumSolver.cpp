@@ -118,6 +118,38 @@ void plotIfPossible(const drum::Plot& p, const fs::path& file)
     drum::writePng(p, file);
 }
 
+// summary.csv: the model's columns, then the measured tracer's moments
+// (trapezoid on its sampling) when the case names a tracer file; returns them
+std::optional<drum::RtdMoments> writeSummary
+(
+    std::vector<std::string> cols,
+    std::vector<double> row,
+    const std::optional<Measured>& measured,
+    const fs::path& out
+)
+{
+    std::optional<drum::RtdMoments> mm;
+    if (measured)
+    {
+        mm = drum::sampledMoments(measured->t, measured->E);
+        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
+        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
+    }
+    drum::CsvTable summary(cols);
+    summary.addRow(row);
+    summary.write(out/"summary.csv");
+    return mm;
+}
+
+// " (measured mean / SD min)" for the progress line, empty without a tracer
+std::string measuredNote(const std::optional<drum::RtdMoments>& mm)
+{
+    if (!mm) return {};
+    std::ostringstream os;
+    os << std::setprecision(4) << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
+    return os.str();
+}
+
 // rtd.csv and the linear and log RTD plots against the measured points
 void writeRtdOutputs
 (
@@ -260,16 +292,7 @@ void runCompartmentWith
         d.partition == "flightModel" ? data[0].slice.backFraction : p.backFraction,
         d.partition == "flightModel" ? nan : p.dragFactor, double(d.slices),
         stagnantKg, stagnant.massRatio > 0 ? stagnant.exchangeTime : nan};
-    std::optional<drum::RtdMoments> mm;
-    if (measured)
-    {
-        mm = drum::sampledMoments(measured->t, measured->E);
-        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
-        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
-    }
-    drum::CsvTable summary(cols);
-    summary.addRow(row);
-    summary.write(out/"summary.csv");
+    const std::optional<drum::RtdMoments> mm = writeSummary(cols, row, measured, out);
 
     drum::CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
         "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",
@@ -302,10 +325,7 @@ void runCompartmentWith
     std::ostringstream os;
     os << std::setprecision(4) << "holdup " << holdup << " kg, airborne " << 100*st.activeMass.sum()/holdup
        << " %, mean residence time " << sm.mean/60 << " min, SD " << sm.sd()/60 << " min";
-    if (mm)
-    {
-        os << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
-    }
+    os << measuredNote(mm);
     say(os.str());
 }
 
@@ -613,16 +633,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
         sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate, sm.mean,
         r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
         net.numericalDenseDispersion, r.cappedLength};
-    std::optional<drum::RtdMoments> mm;
-    if (measured)
-    {
-        mm = drum::sampledMoments(measured->t, measured->E);
-        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
-        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
-    }
-    drum::CsvTable summary(cols);
-    summary.addRow(row);
-    summary.write(out/"summary.csv");
+    const std::optional<drum::RtdMoments> mm = writeSummary(cols, row, measured, out);
 
     drum::CsvTable cls({"size_um", "feed_fraction", "holdup_fraction", "T_eq139_s", "network_mean_s", "network_std_s"});
     for (std::size_t k = 0; k < d.sizes.size(); ++k)
@@ -658,10 +669,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     os << std::setprecision(4) << "holdup " << r.holdup_kg << " kg, airborne " << 100*r.airborne_fraction
        << " %, mean residence time " << r.meanResidenceTime/60 << " min (Eq 138; network "
        << ex.mean/60 << "), RTD SD " << sm.sd()/60 << " min";
-    if (mm)
-    {
-        os << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
-    }
+    os << measuredNote(mm);
     say(os.str());
 }
 

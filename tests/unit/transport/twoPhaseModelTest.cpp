@@ -4,6 +4,7 @@
 #include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
+#include "sheikhTestCase.hpp"
 
 #include <gtest/gtest.h>
 
@@ -43,16 +44,7 @@ TwoPhaseCase eadCase(double slope = 2*deg)
 
 TwoPhaseCase sheikhCase(double slope = 1*deg)
 {
-    TwoPhaseCase c;
-    c.name = "sheikh test";
-    c.drum = {0.385, 2.10, slope, 5.7/60, 0.0};
-    c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg);
-    c.material.particleDensity = 2650;
-    c.material.bulkDensity = 1517;
-    c.material.repose = 35.69*deg;
-    c.material.sieveSizes = {600e-6, 427e-6, 327e-6, 256e-6, 168e-6, 88e-6};
-    c.material.massFractions = {11.6, 21.6, 12.0, 29.6, 22.1, 3.2};
-    return c;
+    return drumTest::sheikhCase(slope, "sheikh test");
 }
 } // namespace
 

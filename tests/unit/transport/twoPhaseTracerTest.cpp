@@ -7,6 +7,7 @@
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
 #include "drum/transport/twoPhaseTracer.hpp"
+#include "sheikhTestCase.hpp"
 
 #include <gtest/gtest.h>
 
@@ -21,15 +22,7 @@ constexpr double deg = pi/180;
 
 TwoPhaseCase sheikhCase(double slope = 1*deg)
 {
-    TwoPhaseCase c;
-    c.name = "sheikh tracer test";
-    c.drum = {0.385, 2.10, slope, 5.7/60, 0.0};
-    c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg);
-    c.material.particleDensity = 2650;
-    c.material.bulkDensity = 1517;
-    c.material.repose = 35.69*deg;
-    c.material.sieveSizes = {600e-6, 427e-6, 327e-6, 256e-6, 168e-6, 88e-6};
-    c.material.massFractions = {11.6, 21.6, 12.0, 29.6, 22.1, 3.2};
+    TwoPhaseCase c = drumTest::sheikhCase(slope, "sheikh tracer test");
     // cocurrent gas: the size classes advance differently per fall
     c.gas = {0.01, 20, GasFlow::cocurrent};
     c.options.axialSteps = 100;
