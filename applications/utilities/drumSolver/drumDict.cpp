@@ -357,11 +357,26 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
             d.denseDispersionValue = r.number(mo, "model", "denseDispersion", 0, 1);
         }
     }
-    for (const char* k : {"imposedDenseFlow", "dischargeEndAngle_deg", "axialSteps", "denseDispersion"})
+    for (const char* k : {"imposedDenseFlow", "dischargeEndAngle_deg", "axialSteps"})
     {
         if (mo[k] && d.model != "twoPhase")
         {
             throw InputError(r.file, std::string("model.") + k, "only for model.type twoPhase");
+        }
+    }
+    // compartment: which passive mass disperses, and the slicing's own part
+    d.dispersionBed = r.word(mo, "model", "dispersionBed", {"kiln", "passive"}, std::string("kiln"));
+    d.subtractNumericalDispersion =
+        r.word(mo, "model", "subtractNumericalDispersion", {"true", "false"}, std::string("false")) == "true";
+    for (const char* k : {"dispersionBed", "subtractNumericalDispersion"})
+    {
+        if (mo[k] && d.model != "compartment")
+        {
+            throw InputError(r.file, std::string("model.") + k, "only for model.type compartment");
+        }
+        if (mo[k] && d.denseDispersion == "none")
+        {
+            throw InputError(r.file, std::string("model.") + k, "needs model.denseDispersion (sherritt2001 or a value)");
         }
     }
     d.partition = r.word(mo, "model", "partition", {"leeCorrelations", "flightModel"}, std::string("leeCorrelations"));
@@ -424,6 +439,11 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
         if (d.model != "compartment" || d.partition != "leeCorrelations")
         {
             throw InputError(r.file, "estimation", "only for model.type compartment with partition leeCorrelations");
+        }
+        if (d.denseDispersion != "none")
+        {
+            throw InputError(r.file, "model.denseDispersion", "not with estimation (the fitted network has no "
+                "passive dispersion); use none, or run the fitted parameters without an estimation section");
         }
         const YAML::Node ps = e["parameters"];
         if (!ps || !ps.IsSequence() || ps.size() == 0)

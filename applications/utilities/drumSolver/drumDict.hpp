@@ -58,8 +58,10 @@ struct DrumDict
     std::optional<double> imposedDenseFlow;      //!< F_2, kg/s (Kamke, Fig 5.30)
     std::optional<double> dischargeEndAngleDeg;  //!< theta_i at the solids discharge
     int axialSteps;                              //!< RK4 steps of the axial solve
-    std::string denseDispersion;                 //!< none | sherritt2001 | value
+    std::string denseDispersion;                 //!< none | sherritt2001 | value (twoPhase and compartment)
     double denseDispersionValue;                 //!< m2/s when a value is given
+    std::string dispersionBed;                   //!< compartment: kiln | passive
+    bool subtractNumericalDispersion;            //!< compartment: take u_b dz/2 off D_z
     std::string drift;          //!< isolated | sherritt | table | tableVc | porousSheet
     drum::DriftSettings driftSettings;   //!< model.drift + drift section (table, outside, constants)
     // rtd

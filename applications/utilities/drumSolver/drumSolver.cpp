@@ -4,7 +4,8 @@
 //   compartment  Lee/Sheehan slice network (Lee 2008 Ch. 3, App. 10.2) with
 //                Lee's App. 10.2.3 correlations; steady holdup profile and
 //                the tracer RTD (exact / implicit / explicit integration);
-//                optional least-squares estimation from a measured curve
+//                optional least-squares estimation from a measured curve,
+//                optional passive-phase dispersion (compartmentDispersion.hpp)
 //   twoPhase     Sherritt (1991) airborne/dense model, axial (DRUM3) solve:
 //                holdup, airborne fraction, mean residence time (Eq 138),
 //                per size class (Eq 139), and the RTD of its tracer network
@@ -23,6 +24,7 @@
 #include "drum/rtd/rtdEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
+#include "drum/transport/compartmentDispersion.hpp"
 #include "drum/transport/compartmentFlightModel.hpp"
 #include "drum/transport/compartmentLeeDryer.hpp"
 #include "drum/transport/axialDispersion.hpp"
@@ -251,7 +253,55 @@ void runCompartmentWith
     const drum::CompartmentNetwork net(slices, dryer.feedRate, p.kilnTime);
     say("steady state of " + std::to_string(d.slices) + " slices");
     const drum::CompartmentSteadyState st = net.steadyState();
-    const drum::TracerSystem sys = net.tracerSystem(st, stagnant);
+    // Passive-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51
+    // per slice with X from the slice's bed mass): a symmetric exchange
+    // between neighbouring passive cells (compartmentDispersion.hpp)
+    drum::PassiveDispersion disp;
+    disp.sliceLength = d.length/d.slices;
+    disp.subtractNumerical = d.subtractNumericalDispersion;
+    if (d.denseDispersion != "none")
+    {
+        disp.bed = drum::parseDispersionBed(d.dispersionBed, "model.dispersionBed", d.path.string());
+    }
+    std::vector<double> dispersionFill;
+    if (d.denseDispersion == "value")
+    {
+        disp.coefficient = {d.denseDispersionValue};
+    }
+    else if (d.denseDispersion == "sherritt2001")
+    {
+        drum::PassiveDispersionDrum pd;
+        pd.drumDiameter = d.diameter;
+        pd.speed = d.speedRpm/60;
+        pd.particleDiameter = drum::dispersionParticleDiameter(d.sizes, d.fractions, d.sphericity);
+        pd.bulkDensity = dryer.bulkDensity;
+        pd.sliceLength = disp.sliceLength;
+        const drum::PassiveSherritt2001 sz = drum::sherritt2001PassiveDispersion(st, disp.bed, pd, d.path.string());
+        say("passive dispersion " + sz.note);
+        for (const std::string& w : sz.warnings)
+        {
+            say("warning: passive dispersion: " + w);
+        }
+        disp.coefficient = sz.coefficient;
+        dispersionFill = sz.fill;
+    }
+    drum::PassiveDispersionSummary ds;
+    const drum::TracerSystem sys = drum::withPassiveDispersion(net.tracerSystem(st, stagnant), st, disp, &ds,
+        d.path.string());
+    if (!disp.coefficient.empty())
+    {
+        std::ostringstream w;
+        w << "passive dispersion (" << drum::toString(disp.bed) << " bed) at " << ds.boundaries
+          << " slice faces: D_z " << ds.meanCoefficient << " m2/s, kilning's upwind part u_b dz/2 "
+          << ds.meanNumerical << " m2/s, added " << ds.meanAdded << " m2/s"
+          << (disp.subtractNumerical ? " (upwind part subtracted)" : " (on top of the network's own mixing)");
+        say(w.str());
+        if (ds.numericalExceeds > 0)
+        {
+            say("warning: at " + std::to_string(ds.numericalExceeds) + " of " + std::to_string(ds.boundaries)
+              + " faces the slicing's kilning step alone disperses the bed more than D_z");
+        }
+    }
     const double stagnantKg = stagnant.massRatio*st.passiveMass.sum();
     const double holdup = st.totalHoldup() + stagnantKg;
 
@@ -283,7 +333,8 @@ void runCompartmentWith
     std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",
         "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
         "design_load_kg", "kiln_mass_kg", "kiln_time_s", "back_fraction", "forward_drag_factor", "slices",
-        "stagnant_kg", "exchange_time_s"};
+        "stagnant_kg", "exchange_time_s", "dense_dispersion_m2_s", "numerical_dispersion_m2_s",
+        "added_dispersion_m2_s"};
     double design = 0;
     for (const auto& s : data) design += s.slice.designLoad;
     std::vector<double> row = {holdup, st.activeMass.sum()/holdup, sm.mean, sm.sd(), sm.skewness,
@@ -291,12 +342,14 @@ void runCompartmentWith
         p.kilnTime,
         d.partition == "flightModel" ? data[0].slice.backFraction : p.backFraction,
         d.partition == "flightModel" ? nan : p.dragFactor, double(d.slices),
-        stagnantKg, stagnant.massRatio > 0 ? stagnant.exchangeTime : nan};
+        stagnantKg, stagnant.massRatio > 0 ? stagnant.exchangeTime : nan,
+        disp.coefficient.empty() ? 0.0 : ds.meanCoefficient, disp.coefficient.empty() ? nan : ds.meanNumerical,
+        disp.coefficient.empty() ? 0.0 : ds.meanAdded};
     const std::optional<drum::RtdMoments> mm = writeSummary(cols, row, measured, out);
 
     drum::CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
         "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",
-        "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B"});
+        "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B", "dispersion_fill", "dense_dispersion_m2_s"});
     const double dL = d.length/d.slices;
     for (int i = 0; i < d.slices; ++i)
     {
@@ -305,7 +358,9 @@ void runCompartmentWith
             st.activeMass(i), st.kilnMass(i), (st.passiveMass(i) + st.activeMass(i))/dL,
             st.releaseFlow(i), st.kilnFlow(i), st.forwardFlow(i), st.backFlow(i), st.returnFlow(i),
             s.slice.passiveTime, s.slice.activeTime, s.correlations.fallHeight,
-            s.slice.forwardFraction, s.slice.backFraction});
+            s.slice.forwardFraction, s.slice.backFraction,
+            dispersionFill.empty() ? nan : dispersionFill[i],
+            disp.coefficient.empty() ? 0.0 : disp.coefficient.size() == 1 ? disp.coefficient[0] : disp.coefficient[i]});
     }
     prof.write(out/"profile.csv");
 
@@ -556,16 +611,11 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
         drum::AxialDispersionInput in;
         in.drumDiameter = d.diameter;
         in.speed = d.speedRpm/60;
-        std::vector<double> dp;
-        for (double sz : d.sizes) dp.push_back(sz*d.sphericity);
-        in.particleDiameter = drum::sauterDiameter(dp, d.fractions);
-        in.fill = (sumZ > 0 ? denseH/sumZ : 0.0)/(pi*d.diameter*d.diameter/4);
+        in.particleDiameter = drum::dispersionParticleDiameter(d.sizes, d.fractions, d.sphericity);
+        in.fill = drum::bedFillFraction(sumZ > 0 ? denseH/sumZ : 0.0, d.diameter);
         const drum::AxialDispersionResult dz = drum::sherritt2001AxialDispersion(in, d.path.string());
         to.denseDispersion = dz.Dz;
-        std::ostringstream os;
-        os << "Sherritt 2001 Eq 51 (" << drum::bedRegimeName(dz.regime) << ", n/n_c " << dz.speedRatio
-           << ", X " << dz.fillUsed << ", d_p " << in.particleDiameter*1e6 << " um): D_z " << dz.Dz << " m2/s";
-        dispersionNote = os.str();
+        dispersionNote = drum::describeAxialDispersion(dz, in);
         say("dense dispersion " + dispersionNote);
         for (const std::string& w : dz.warnings)
         {

@@ -1,5 +1,6 @@
 #include "drum/transport/axialDispersion.hpp"
 
+#include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <cmath>
@@ -124,6 +125,35 @@ AxialDispersionResult sherritt2001AxialDispersion(const AxialDispersionInput& in
     r.Dz = k.k*std::pow(r.speedRatio, k.a)*std::pow(in.drumDiameter, k.b)
           *std::pow(in.particleDiameter, k.c)*std::pow(r.fillUsed, k.d);  // Eq 51
     return r;
+}
+
+
+double dispersionParticleDiameter
+(
+    const std::vector<double>& sieveSizes,
+    const std::vector<double>& fractions,
+    const double sphericity
+)
+{
+    std::vector<double> dp;
+    for (double s : sieveSizes) dp.push_back(s*sphericity);
+    return sauterDiameter(dp, fractions);
+}
+
+
+double bedFillFraction(const double bedVolumePerLength, const double drumDiameter)
+{
+    requirePositive(drumDiameter, "dispersion: drum diameter [m]");
+    return bedVolumePerLength/(pi*drumDiameter*drumDiameter/4);
+}
+
+
+std::string describeAxialDispersion(const AxialDispersionResult& r, const AxialDispersionInput& in)
+{
+    std::ostringstream os;
+    os << "Sherritt 2001 Eq 51 (" << bedRegimeName(r.regime) << ", n/n_c " << r.speedRatio
+       << ", X " << r.fillUsed << ", d_p " << in.particleDiameter*1e6 << " um): D_z " << r.Dz << " m2/s";
+    return os.str();
 }
 
 } // namespace drum

@@ -67,6 +67,22 @@ struct AxialDispersionResult
 //  X < 0.5, 2R 0.05-0.6 m, d_p 0.125-13 mm) is listed in warnings.
 AxialDispersionResult sherritt2001AxialDispersion(const AxialDispersionInput& in, const std::string& file = "");
 
+//- d_p for Eq 51 from a size distribution: the Sauter mean of the sieve
+//  sizes times the sphericity (the drag diameters), m
+double dispersionParticleDiameter
+(
+    const std::vector<double>& sieveSizes,
+    const std::vector<double>& fractions,
+    double sphericity
+);
+
+//- Fill fraction X of a bed of volume per drum length V' (m3/m): V'/(pi D^2/4)
+double bedFillFraction(double bedVolumePerLength, double drumDiameter);
+
+//- One-line description of an evaluation, "Sherritt 2001 Eq 51
+//  (rolling/cascading, n/n_c 0.159, X 0.045, d_p 850 um): D_z ... m2/s"
+std::string describeAxialDispersion(const AxialDispersionResult& r, const AxialDispersionInput& in);
+
 } // namespace drum
 
 #endif

@@ -3,6 +3,7 @@
 // Run 33: 3.88e-5 m2/s), the regime boundaries, and the scatter of the
 // correlation over the tabulated experiments it was fitted to.
 #include "drum/io/csv.hpp"
+#include "drum/io/inputError.hpp"
 #include "drum/transport/axialDispersion.hpp"
 
 #include <gtest/gtest.h>
@@ -108,4 +109,19 @@ TEST(AxialDispersion, ScatterOverTheFittedExperimentsIsAboutAFactorTwo)
     std::printf("D_z rolling/cascading: %d rows, RMS ln %.3f, %d within x2\n", n, rms, within2);
     EXPECT_LT(rms, std::log(2.5));
     EXPECT_GE(within2, 0.6*n);
+}
+
+TEST(AxialDispersion, SharedInputsForBothTransportModels)
+{
+    // d_p: Sauter mean 1/sum(x_i/d_i) of the sieve sizes times the sphericity
+    const double d32 = 1.0/(0.25/100e-6 + 0.75/400e-6);
+    EXPECT_NEAR(dispersionParticleDiameter({100e-6, 400e-6}, {25, 75}, 0.8), 0.8*d32, 1e-15);
+    // X of a bed of 0.5 m3/m in a 2 m drum: 0.5/pi
+    EXPECT_NEAR(bedFillFraction(0.5, 2.0), 0.5/3.14159265358979323846, 1e-15);
+    EXPECT_THROW(bedFillFraction(0.5, 0.0), InputError);
+    AxialDispersionInput in{0.45, 12.1/60, 3e-3, 0.24, false};
+    const AxialDispersionResult r = sherritt2001AxialDispersion(in);
+    const std::string note = describeAxialDispersion(r, in);
+    EXPECT_NE(note.find("rolling/cascading"), std::string::npos) << note;
+    EXPECT_NE(note.find("3000 um"), std::string::npos) << note;
 }

@@ -50,6 +50,20 @@ bad 's/type: compartment/type: plugFlow/' "model.type.*allowed: compartment, two
 bad 's#file: .*#file: /nonexistent/tracer.csv#' "rtd.tracer.file.*not found"
 bad 's/integrator: exact/integrator: rk4/' "rtd.integrator.*allowed"
 bad 's/backFraction: .*/backFraction: 0.95/' "C_F + C_B"
+# passive-phase dispersion (model.denseDispersion for the compartment model)
+bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: -1/' "model.denseDispersion.*range"
+bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001\n  dispersionBed: bottom/' "model.dispersionBed.*allowed: kiln, passive"
+bad 's/^  forwardDragFactor: .*/&\n  dispersionBed: passive/' "model.dispersionBed.*needs model.denseDispersion"
+bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001\nestimation: {parameters: [kilnTime]}/' "model.denseDispersion.*not with estimation"
+mkdir -p "$work/dispersion"
+sed 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001/' "$work/drumDict" > "$work/dispersion/drumDict"
+"$solver" -case "$work/dispersion" > "$work/dispersion/log" 2>&1 || { cat "$work/dispersion/log"; fail "sherritt2001 dispersion case did not run"; }
+grep -q "rolling/cascading" "$work/dispersion/log" || fail "dispersion regime not reported"
+grep -q "warning: passive dispersion: drum diameter" "$work/dispersion/log" || fail "no warning for the 5 m drum outside the fitted range"
+# same mean (holdup theorem), wider RTD than Lee's network alone
+paste -d, "$work/results/summary.csv" "$work/dispersion/results/summary.csv" | awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = c[$i] ? c[$i] : i; n = NF/2 }
+    NR==2 { m0 = $(c["exact_mean_s"]); s0 = $(c["exact_std_s"]); m1 = $(c["exact_mean_s"] + n); s1 = $(c["exact_std_s"] + n);
+            if ((m1 - m0)^2 > (1e-6*m0)^2 || !(s1 > s0)) { print m0, m1, s0, s1; exit 1 } }' || fail "dispersion changed the mean or did not widen the RTD"
 # forward Euler beyond its stable step: a clear error, no silent answer
 bad 's/integrator: exact/integrator: forwardEuler/' "forward Euler is unstable"
 # model twoPhase (Sherritt 1991) on Sheikh's drum (Sherritt Table 5.1)
