@@ -7,6 +7,8 @@
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 
+#include "mixedSlices.hpp"
+
 #include <gtest/gtest.h>
 #include <cmath>
 #include <cstdio>
@@ -18,17 +20,7 @@ namespace
 
 constexpr double pi = 3.14159265358979323846;
 
-std::vector<CompartmentSlice> mixedSlices()
-{
-    // Slices 1-3 overloaded (kilning), 4-6 underloaded (no kilning bed)
-    std::vector<CompartmentSlice> s;
-    for (int i = 0; i < 6; ++i)
-    {
-        const bool under = i >= 3;
-        s.push_back({under ? 800.0 : 150.0, 10.0 + i, 0.8 + 0.02*i, under ? 0.6 : 0.1, under ? 0.1 : 0.4});
-    }
-    return s;
-}
+using drumTest::mixedSlices;
 
 // N equal slices carried by kilning only (C_F = C_B = 0): design load 1 kg,
 // t_p 10 s, a fast fall (t_a 1e-4 s, 1e-5 kg airborne) and t_kiln 100 s, so

@@ -4,6 +4,8 @@
 #include "drum/transport/compartmentNetwork.hpp"
 #include "drum/io/inputError.hpp"
 
+#include "mixedSlices.hpp"
+
 #include <gtest/gtest.h>
 #include <cmath>
 #include <limits>
@@ -27,17 +29,7 @@ Eigen::VectorXd integrateMasses(const CompartmentNetwork& net, Eigen::VectorXd m
     return m;
 }
 
-std::vector<CompartmentSlice> mixedSlices()
-{
-    // Slices 1-3 overloaded (kilning), 4-6 underloaded (forward step large)
-    std::vector<CompartmentSlice> s;
-    for (int i = 0; i < 6; ++i)
-    {
-        const bool under = i >= 3;
-        s.push_back({under ? 800.0 : 150.0, 10.0 + i, 0.8 + 0.02*i, under ? 0.6 : 0.1, under ? 0.1 : 0.4});
-    }
-    return s;
-}
+using drumTest::mixedSlices;
 
 } // namespace
 
