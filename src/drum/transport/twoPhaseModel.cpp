@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <utility>
 
 namespace drum
 {
@@ -52,6 +53,23 @@ double integrate(F f, double a, double b, std::vector<double> breaks, double hma
         lo = hi;
     }
     return sum;
+}
+
+// The largest feed DRUM1 carries over a set of states, and its theta_i
+// (0, 0 when none carries solids towards the discharge)
+std::pair<double, double> largestFeed(const std::vector<TwoPhaseState>& states)
+{
+    double maxFeed = 0;
+    double maxAt = 0;
+    for (const TwoPhaseState& st : states)
+    {
+        if (st.valid && st.feedRate > maxFeed)
+        {
+            maxFeed = st.feedRate;
+            maxAt = st.dischargeAngle;
+        }
+    }
+    return {maxFeed, maxAt};
 }
 
 std::vector<double> within(const std::vector<double>& v, double a, double b)
@@ -658,6 +676,20 @@ TwoPhaseResult TwoPhaseModel::constantResult(const TwoPhaseState& s) const
 }
 
 
+std::vector<TwoPhaseState> TwoPhaseModel::drum1Grid() const
+{
+    const double lo = minDischargeAngle();
+    const double hi = finalAngle_;
+    const int n = std::max(8, static_cast<int>(std::ceil((hi - lo)/case_.options.sweepStep)));
+    std::vector<TwoPhaseState> states;
+    for (int k = 0; k <= n; ++k)
+    {
+        states.push_back(atDischargeAngle(lo + (hi - lo)*k/n));
+    }
+    return states;
+}
+
+
 std::vector<TwoPhaseResult> TwoPhaseModel::solveConstantHoldup(double feedRate) const
 {
     if (!(feedRate > 0) || !std::isfinite(feedRate))
@@ -668,24 +700,13 @@ std::vector<TwoPhaseResult> TwoPhaseModel::solveConstantHoldup(double feedRate) 
     }
     const double lo = minDischargeAngle();
     const double hi = finalAngle_;
-    const int n = std::max(8, static_cast<int>(std::ceil((hi - lo)/case_.options.sweepStep)));
-    std::vector<TwoPhaseState> states;
-    for (int k = 0; k <= n; ++k)
-    {
-        states.push_back(atDischargeAngle(lo + (hi - lo)*k/n));
-    }
+    const std::vector<TwoPhaseState> states = drum1Grid();
+    const int n = static_cast<int>(states.size()) - 1;
     std::vector<TwoPhaseResult> roots;
-    double maxFeed = 0;
-    double maxAt = 0;
     for (int k = n; k >= 1; --k)  // from the lightest loading down
     {
         const auto& a = states[k];
         const auto& b = states[k - 1];
-        if (a.valid && a.feedRate > maxFeed)
-        {
-            maxFeed = a.feedRate;
-            maxAt = a.dischargeAngle;
-        }
         if (!a.valid || !b.valid)
         {
             continue;
@@ -721,13 +742,9 @@ std::vector<TwoPhaseResult> TwoPhaseModel::solveConstantHoldup(double feedRate) 
             roots.push_back(constantResult(atDischargeAngle(0.5*(tA + tB))));
         }
     }
-    if (states[0].valid && states[0].feedRate > maxFeed)
-    {
-        maxFeed = states[0].feedRate;
-        maxAt = states[0].dischargeAngle;
-    }
     if (roots.empty())
     {
+        const auto [maxFeed, maxAt] = largestFeed(states);
         std::ostringstream os;
         if (maxFeed == 0)
         {
@@ -1005,17 +1022,7 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
         // l(theta_i) vanishes Eq 134 stops the holdup rising at all, so the
         // profile would end at the flights' capacity whatever the feed
         // (the Sheikh plateau). No steady state: refuse.
-        double maxFeed = 0;
-        double maxAt = 0;
-        for (double t = minDischargeAngle(); t <= finalAngle_; t += case_.options.sweepStep)
-        {
-            const TwoPhaseState st = atDischargeAngle(t);
-            if (st.valid && st.feedRate > maxFeed)
-            {
-                maxFeed = st.feedRate;
-                maxAt = t;
-            }
-        }
+        const auto [maxFeed, maxAt] = largestFeed(drum1Grid());
         std::ostringstream os;
         os << "feed " << feedRate << " kg/s is beyond what the drum can carry: the bed slope is still held at"
            << " the cap phi = " << phi/deg << " deg at the feed end (Eqs 79, 135; capped over "

@@ -171,6 +171,9 @@ private:
     double gasVelocity(double holdup) const;
     double thetaOfHoldup(double H) const;
     TwoPhaseResult constantResult(const TwoPhaseState& s) const;
+    //- DRUM1 states over [minDischargeAngle, final angle] in sweepStep
+    //  steps (at least 8): the grid of the root search and of the capacity
+    std::vector<TwoPhaseState> drum1Grid() const;
 
     TwoPhaseCase case_;
     SherrittFlightSurface ex_;
