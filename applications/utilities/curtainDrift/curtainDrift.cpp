@@ -1,7 +1,7 @@
 // curtainDrift: drift models on wind-tunnel style test rows (issue 6).
 //
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
-//                [-table FILE] [-outside refuse|clamp] [-constants FILE]
+//                [-table FILE[,FILE...]] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
@@ -39,7 +39,7 @@ namespace
 
 const char* usage =
     "usage:\n"
-    "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE]\n"
+    "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-work DIR] [-keep] [-skipFailed]\n"
     "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
@@ -90,6 +90,68 @@ fs::path defaultMaterials()
     return fs::path("..")/"shared"/"data"/"windtunnel_materials.csv";
 }
 
+//- The table file of each material from -table FILE[,FILE...] (models
+//  table and tableVc): a table whose header names a material ('# material:',
+//  buildDriftTable's `material` entry) serves that material; a table
+//  without one serves every other material. Two tables for one material,
+//  two generic tables, or a table naming a material the materials file
+//  does not have: InputError. Other models ignore -table (empty map), and
+//  so does auto without one (its table is then optional).
+std::map<std::string, fs::path> tablesByMaterial
+(
+    const std::string& list,
+    const std::map<std::string, drum::WindTunnelMaterial>& materials,
+    const std::string& model
+)
+{
+    std::map<std::string, fs::path> out;
+    // auto takes a table when given one (else the default, if present)
+    if (model != "table" && model != "tableVc" && !(model == "auto" && !list.empty())) return out;
+    std::vector<fs::path> files;
+    for (std::size_t pos = 0; pos <= list.size();)
+    {
+        const auto comma = list.find(',', pos);
+        const std::string f = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        if (f.empty() && !list.empty()) throw drum::InputError("", "-table", "empty file name in '" + list + "'");
+        if (!f.empty()) files.push_back(f);
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    if (files.empty()) files.push_back(drum::defaultDriftTableFile());
+    fs::path generic;
+    for (const auto& f : files)
+    {
+        const auto h = drum::DriftTable::read(f).header();
+        const auto it = h.find("material");
+        if (it == h.end())
+        {
+            if (!generic.empty())
+            {
+                throw drum::InputError(f.string(), "-table", "two tables without a '# material:' header ("
+                    + generic.string() + " and this one): which serves the other materials is ambiguous");
+            }
+            generic = f;
+            continue;
+        }
+        if (!materials.count(it->second))
+        {
+            throw drum::InputError(f.string(), "header material", "'" + it->second
+                + "' is not a material of the materials file");
+        }
+        if (out.count(it->second))
+        {
+            throw drum::InputError(f.string(), "header material", "a second table for '" + it->second
+                + "' (the first: " + out.at(it->second).string() + ")");
+        }
+        out[it->second] = f;
+    }
+    for (const auto& kv : materials)
+    {
+        if (!out.count(kv.first) && !generic.empty()) out[kv.first] = generic;
+    }
+    return out;
+}
+
 int predict(const Args& a)
 {
     const fs::path testsFile = a.need("tests"), out = a.need("out");
@@ -137,11 +199,15 @@ int predict(const Args& a)
     {
         drum::DriftSettings s;
         s.model = model;
-        if (a.has("table")) s.table = a.get("table");
         if (a.has("constants")) s.constants = a.get("constants");
         s.outside = drum::parseOutOfRangePolicy(a.get("outside", "refuse"), "-outside");
-        // One model per material: the porousSheet curtain is the material's PSD
+        // -table FILE[,FILE...]: which table serves which material
+        const auto tableFor = tablesByMaterial(a.get("table"), materials, model);
+        // One model per material: the porousSheet curtain is the material's
+        // PSD; a table model is built once per table file (one read, one
+        // clamp count per table)
         std::map<std::string, std::shared_ptr<const drum::DriftModel>> models;
+        std::map<std::string, std::shared_ptr<const drum::DriftModel>> byTable;
         for (const auto& [name, mat] : materials)
         {
             std::vector<double> d, x;
@@ -151,17 +217,25 @@ int predict(const Args& a)
                 x.push_back(c.massFraction);
             }
             s.curtainDiameter = drum::sauterDiameter(d, x);
-            if (!models.empty() && model != "porousSheet")
-            {
-                models[name] = models.begin()->second;   // one table read, one clamp count
-                continue;
-            }
-            models[name] = drum::makeDriftModel(s, air, {}, "-model");
+            const auto it = tableFor.find(name);
+            s.table = it == tableFor.end() ? fs::path() : it->second;
+            const bool usesTable = model == "table" || model == "tableVc";
+            if (usesTable && it == tableFor.end()) continue;   // no table serves it: its rows are refused below
+            // porousSheet and auto (its dilute test) use the material's curtain diameter
+            const std::string key = model == "porousSheet" || model == "auto" ? name : s.table.string();
+            if (!byTable.count(key)) byTable[key] = drum::makeDriftModel(s, air, {}, "-model");
+            models[name] = byTable.at(key);
         }
         for (const auto& t : tests)
         {
             try
             {
+                if (!models.count(t.material))
+                {
+                    throw drum::InputError(a.get("table"), "material " + t.material,
+                        "none of the -table files serves this material (a table with a '# material:' header "
+                        "serves that material only; give a table without one, or one for " + t.material + ")");
+                }
                 pred[t.test] = drum::predictMeanAdvance(*models.at(t.material), t, materials.at(t.material));
             }
             catch (const drum::InputError& e)
@@ -179,15 +253,18 @@ int predict(const Args& a)
             std::cout << "curtainDrift: " << tests.size() - pred.size() << " of " << tests.size()
                       << " rows left out (-skipFailed)\n";
         }
-        const drum::DriftTable* table = nullptr;
-        if (const auto* td = dynamic_cast<const drum::TableDrift*>(models.begin()->second.get())) table = &td->table();
-        if (const auto* tv = dynamic_cast<const drum::TableVcDrift*>(models.begin()->second.get())) table = &tv->table();
-        for (int ax = 0; table && ax < drum::driftAxisCount; ++ax)
+        for (const auto& [key, m] : byTable)
         {
-            if (table->clampCount(ax))
+            const drum::DriftTable* table = nullptr;
+            if (const auto* td = dynamic_cast<const drum::TableDrift*>(m.get())) table = &td->table();
+            if (const auto* tv = dynamic_cast<const drum::TableVcDrift*>(m.get())) table = &tv->table();
+            for (int ax = 0; table && ax < drum::driftAxisCount; ++ax)
             {
-                std::cout << "curtainDrift: " << table->clampCount(ax) << " class queries clamped on "
-                          << drum::driftAxisName(ax) << "\n";
+                if (table->clampCount(ax))
+                {
+                    std::cout << "curtainDrift: " << table->clampCount(ax) << " class queries clamped on "
+                              << drum::driftAxisName(ax) << " (" << table->file().string() << ")\n";
+                }
             }
         }
     }

@@ -125,6 +125,82 @@ TEST(CurtainDriftCli, TableVcWithUniformRatioIsTheLoneParticleAtThatVelocity)
 }
 
 
+// A copy of `table` whose header names a material (buildDriftTable's `material` entry)
+fs::path materialTable(const fs::path& table, const std::string& material, const std::string& name)
+{
+    std::string t = text(table);
+    const auto at = t.find("# axes:");
+    t.insert(at, "# material: " + material + "\n");
+    const fs::path f = dir()/name;
+    std::ofstream(f) << t;
+    return f;
+}
+
+std::map<int, std::string> materialOfTest()
+{
+    std::map<int, std::string> m;
+    io::CSVReader<2> in(tests);
+    in.read_header(io::ignore_extra_column, "test", "material");
+    int t;
+    std::string name;
+    while (in.read_row(t, name)) m[t] = name;
+    return m;
+}
+
+
+TEST(CurtainDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest)
+{
+    const auto mat = materialOfTest();
+    const fs::path half = dir()/"half.csv", full = dir()/"full.csv", both = dir()/"both.csv";
+    ASSERT_EQ(run("-tests " + tests + " -out " + half.string() + " -model tableVc -table " + uniformTable(0.5).string()).rc, 0);
+    ASSERT_EQ(run("-tests " + tests + " -out " + full.string() + " -model tableVc -table " + uniformTable(1.0).string()).rc, 0);
+    const fs::path sand = materialTable(uniformTable(0.5), "sand", "sandTable.csv");
+    // sand rows from the sand table (V_c/V_g 0.5), the others from the generic one (1.0); order free
+    for (const std::string list : {sand.string() + "," + uniformTable(1.0).string(),
+                                   uniformTable(1.0).string() + "," + sand.string()})
+    {
+        const CliRun r = run("-tests " + tests + " -out " + both.string() + " -model tableVc -table " + list);
+        ASSERT_EQ(r.rc, 0) << r.out;
+        const auto h = readPred(half), f = readPred(full), b = readPred(both);
+        ASSERT_EQ(b.size(), 69u);
+        int nSand = 0;
+        for (const auto& [t, v] : b)
+        {
+            const bool isSand = mat.at(t) == "sand";
+            nSand += isSand;
+            EXPECT_DOUBLE_EQ(v, isSand ? h.at(t) : f.at(t)) << "test " << t << " " << mat.at(t);
+        }
+        EXPECT_EQ(nSand, 29);
+    }
+    // a material table alone serves its own rows only: the others are refused, or left out on request
+    const fs::path out = dir()/"keep.csv";
+    std::ofstream(out) << "keep\n";
+    CliRun r = run("-tests " + tests + " -out " + out.string() + " -model table -table " + sand.string());
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("none of the -table files serves this material"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("material raw_shale"), std::string::npos) << r.out;
+    EXPECT_EQ(text(out), "keep\n");
+    r = run("-tests " + tests + " -out " + out.string() + " -model table -skipFailed -table " + sand.string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    EXPECT_EQ(readPred(out).size(), 29u);
+    // ambiguous or unknown: refused, output untouched
+    std::ofstream(out) << "keep\n";
+    const fs::path sand2 = materialTable(uniformTable(0.8), "sand", "sandTable2.csv");
+    const fs::path clay = materialTable(uniformTable(0.8), "clay", "clayTable.csv");
+    for (const auto& [list, needle] : std::vector<std::pair<std::string, std::string>>{
+             {sand.string() + "," + sand2.string(), "a second table for 'sand'"},
+             {uniformTable(0.8).string() + "," + uniformTable(1.0).string(), "two tables without a '# material:' header"},
+             {clay.string(), "'clay' is not a material of the materials file"},
+             {sand.string() + ",", "empty file name"}})
+    {
+        r = run("-tests " + tests + " -out " + out.string() + " -model tableVc -table " + list);
+        EXPECT_NE(r.rc, 0) << list;
+        EXPECT_NE(r.out.find(needle), std::string::npos) << r.out;
+        EXPECT_EQ(text(out), "keep\n") << list;
+    }
+}
+
+
 TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
 {
     for (const char* model : {"isolated", "sherritt"})
