@@ -135,6 +135,7 @@ std::map<int, double> cfdPredictions
             << " -diameters " << join(d) << " -fractions " << join(w) << " -heights " << t.fallHeight
             << " -level " << o.level << " -np " << o.np;
         if (!o.drag.empty()) cmd << " -drag " << o.drag;
+        if (!o.particleTurbulence.empty()) cmd << " -particleTurbulence " << o.particleTurbulence;
         if (o.keep) cmd << " -keep";
         const fs::path log = o.work/("test" + std::to_string(t.test) + ".log");
         std::cout << "curtainDrift: cfd " << done + 1 << "/" << tests.size() << ": test " << t.test

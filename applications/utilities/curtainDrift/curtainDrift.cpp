@@ -3,6 +3,7 @@
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE[,FILE...]] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
+//                [-particleTurbulence none|Simonin]   (cfd: curtainCase's option)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
@@ -41,7 +42,7 @@ const char* usage =
     "usage:\n"
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
-    "               [-drag NAME] [-work DIR] [-keep] [-skipFailed]\n"
+    "               [-drag NAME] [-particleTurbulence none|Simonin] [-work DIR] [-keep] [-skipFailed]\n"
     "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -68,7 +69,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -180,6 +181,11 @@ int predict(const Args& a)
         }
         o.np = std::stoi(a.get("np", "1"));
         o.drag = a.get("drag");
+        o.particleTurbulence = a.get("particleTurbulence");
+        if (!o.particleTurbulence.empty() && o.particleTurbulence != "none" && o.particleTurbulence != "Simonin")
+        {
+            throw drum::InputError("", "-particleTurbulence", "'" + o.particleTurbulence + "': valid names are none, Simonin");
+        }
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());
