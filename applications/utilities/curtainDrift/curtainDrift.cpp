@@ -12,7 +12,9 @@
 //   curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table
 //   curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
+//                [-byMaterial FILE.csv]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
+//       (and per material)
 //
 // Models: isolated, sherritt, table, tableVc, porousSheet, cfd (README.md).
 #include "cfdPrediction.hpp"
@@ -45,6 +47,7 @@ const char* usage =
     "               [-drag NAME] [-particleTurbulence none|Simonin] [-work DIR] [-keep] [-skipFailed]\n"
     "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
+    "               [-byMaterial FILE.csv]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
 
 struct Args
@@ -69,7 +72,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -321,7 +324,7 @@ int score(const Args& a)
         if (comma == std::string::npos) break;
         pos = comma + 1;
     }
-    curtainDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"));
+    curtainDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"));
     return 0;
 }
 

@@ -23,7 +23,8 @@ void writeScores
     const fs::path& testsFile,
     const std::vector<NamedPredictions>& predictions,
     const fs::path& csv,
-    const fs::path& png
+    const fs::path& png,
+    const fs::path& byMaterial
 )
 {
     const auto measured = drum::readMeasuredAdvance(testsFile);
@@ -39,6 +40,18 @@ void writeScores
     }
     std::set<double> heights;
     for (const auto& kv : height) heights.insert(kv.second);
+    std::map<int, std::string> material;
+    {
+        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(testsFile.string());
+        in.read_header(io::ignore_extra_column, "test", "material");
+        int t;
+        std::string m;
+        while (in.read_row(t, m)) material[t] = m;
+    }
+    std::set<std::string> materials;
+    for (const auto& kv : material) materials.insert(kv.second);
+    std::ostringstream om;
+    om << "model,material,count,rms_ln,bias_ln,within25\n" << std::setprecision(4);
 
     std::ostringstream os;
     os << "model,fall_height_m,count,rms_ln,bias_ln,within25\n" << std::setprecision(4);
@@ -79,6 +92,18 @@ void writeScores
             if (!sub.empty()) line(yl.str(), sub);
         }
         line("all", pred);
+        for (const auto& m : materials)
+        {
+            std::map<int, double> sub;
+            for (const auto& kv : pred)
+            {
+                if (material.count(kv.first) && material.at(kv.first) == m) sub.insert(kv);
+            }
+            if (sub.empty()) continue;
+            const drum::PredictionScore s = drum::scorePredictions(sub, measured);
+            om << p.model << ',' << m << ',' << s.count << ',' << s.rmsLnError << ',' << s.bias << ','
+               << s.within25 << '\n';
+        }
         drum::PlotSeries s{p.model, {}, {}, "points pt " + points[k % points.size()] + " ps 1.3"};
         for (const auto& kv : pred)
         {
@@ -91,6 +116,7 @@ void writeScores
         plot.series.push_back(s);
     }
     drum::writeFileAtomically(csv, os.str());
+    if (!byMaterial.empty()) drum::writeFileAtomically(byMaterial, om.str());
     if (!png.empty())
     {
         lo = std::max(lo*0.8, 1e-3);

@@ -207,9 +207,10 @@ TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
     {
         ASSERT_EQ(run("-tests " + tests + " -out " + (dir()/(std::string(model) + ".csv")).string() + " -model " + model).rc, 0);
     }
-    const fs::path csv = dir()/"scores.csv";
+    const fs::path csv = dir()/"scores.csv", byMat = dir()/"scoresByMaterial.csv";
     const CliRun r = run("-score -tests " + tests + " -predictions isolated=" + (dir()/"isolated.csv").string()
-                      + ",sherritt=" + (dir()/"sherritt.csv").string() + " -out " + csv.string());
+                      + ",sherritt=" + (dir()/"sherritt.csv").string() + " -out " + csv.string()
+                      + " -byMaterial " + byMat.string());
     ASSERT_EQ(r.rc, 0) << r.out;
     io::CSVReader<4> in(csv.string());
     in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
@@ -226,6 +227,21 @@ TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
     EXPECT_EQ(rowsPerHeight, 4);   // 6.6 and 10.3 m for two models
     EXPECT_NEAR(overall.at("isolated"), 0.88, 0.005);   // shared/data README
     EXPECT_NEAR(overall.at("sherritt"), 0.34, 0.005);
+    // per material: the shared rows' counts, and the squares add up to the overall RMS
+    io::CSVReader<4> bm(byMat.string());
+    bm.read_header(io::ignore_extra_column, "model", "material", "count", "rms_ln");
+    std::map<std::string, int> count;
+    std::map<std::string, double> sumSq;
+    while (bm.read_row(m, y, n, rms))
+    {
+        if (m == "sherritt") count[y] = n;
+        sumSq[m] += n*rms*rms;
+    }
+    EXPECT_EQ(count, (std::map<std::string, int>{{"raw_shale", 19}, {"sand", 29}, {"spent_shale", 21}}));
+    for (const auto& [model, ss] : sumSq)
+    {
+        EXPECT_NEAR(std::sqrt(ss/69), overall.at(model), 2e-3) << model;   // 4 printed digits
+    }
 }
 
 
