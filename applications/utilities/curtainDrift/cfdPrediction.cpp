@@ -136,6 +136,7 @@ std::map<int, double> cfdPredictions
             << " -level " << o.level << " -np " << o.np;
         if (!o.drag.empty()) cmd << " -drag " << o.drag;
         if (!o.particleTurbulence.empty()) cmd << " -particleTurbulence " << o.particleTurbulence;
+        if (!o.turbulentDispersion.empty()) cmd << " -turbulentDispersion " << o.turbulentDispersion;
         if (o.keep) cmd << " -keep";
         const fs::path log = o.work/("test" + std::to_string(t.test) + ".log");
         std::cout << "curtainDrift: cfd " << done + 1 << "/" << tests.size() << ": test " << t.test

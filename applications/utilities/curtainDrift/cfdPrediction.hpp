@@ -24,6 +24,7 @@ struct CfdOptions
     bool skipFailed = false;        //!< a failed row is reported and left out (never written as a number)
     std::string command = "curtainCase";
     std::string particleTurbulence;  //!< curtainCase -particleTurbulence (empty: its default)
+    std::string turbulentDispersion; //!< curtainCase -turbulentDispersion (empty: its default)
 };
 
 //- Bulk mean advance per test: sum_i x_i drift_i at the row's fall height

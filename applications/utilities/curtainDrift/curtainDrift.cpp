@@ -3,7 +3,8 @@
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE[,FILE...]] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
-//                [-particleTurbulence none|Simonin]   (cfd: curtainCase's option)
+//                [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]
+//                                     (cfd: curtainCase's options)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
@@ -44,7 +45,8 @@ const char* usage =
     "usage:\n"
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
-    "               [-drag NAME] [-particleTurbulence none|Simonin] [-work DIR] [-keep] [-skipFailed]\n"
+    "               [-drag NAME] [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]\n"
+    "               [-work DIR] [-keep] [-skipFailed]\n"
     "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
@@ -72,7 +74,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -188,6 +190,12 @@ int predict(const Args& a)
         if (!o.particleTurbulence.empty() && o.particleTurbulence != "none" && o.particleTurbulence != "Simonin")
         {
             throw drum::InputError("", "-particleTurbulence", "'" + o.particleTurbulence + "': valid names are none, Simonin");
+        }
+        o.turbulentDispersion = a.get("turbulentDispersion");
+        if (!o.turbulentDispersion.empty() && o.turbulentDispersion != "none" && o.turbulentDispersion != "gradientDiffusion")
+        {
+            throw drum::InputError("", "-turbulentDispersion", "'" + o.turbulentDispersion
+                + "': valid names are none, gradientDiffusion");
         }
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
