@@ -10,8 +10,8 @@
 //                                 the range under refuse - is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
 //       shared/data/windtunnel_tests.csv; the measured advance is never read)
-//   curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml
-//       least-squares constants of the reduced model on the CFD table
+//   curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
+//       least-squares constants of the reduced model on the CFD table(s)
 //   curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
 //                [-byMaterial FILE.csv]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
@@ -47,7 +47,7 @@ const char* usage =
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]\n"
     "               [-work DIR] [-keep] [-skipFailed]\n"
-    "  curtainDrift -fit porousSheet -table FILE -out CONSTANTS.yaml\n"
+    "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -302,11 +302,24 @@ int fit(const Args& a)
     {
         throw drum::InputError("", "-fit", "'" + model + "': the reduced models with constants are: porousSheet");
     }
-    const fs::path tableFile = a.need("table"), out = a.need("out");
-    const drum::DriftTable table = drum::DriftTable::read(tableFile);
+    // -table FILE[,FILE...]: one fit over the rows of all of them
+    const std::string list = a.need("table");
+    const fs::path out = a.need("out");
+    std::vector<drum::DriftTable> tables;
+    for (std::size_t pos = 0; pos <= list.size();)
+    {
+        const auto comma = list.find(',', pos);
+        const std::string f = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
+        if (f.empty()) throw drum::InputError("", "-table", "empty file name in '" + list + "'");
+        tables.push_back(drum::DriftTable::read(f));
+        if (comma == std::string::npos) break;
+        pos = comma + 1;
+    }
+    std::vector<const drum::DriftTable*> ptrs;
+    for (const auto& t : tables) ptrs.push_back(&t);
     const particleDrag::Gas air = particleDrag::Gas::air(20);
-    drum::PorousSheetFit f = drum::fitPorousSheet(table, air);
-    f.constants.provenance["command"] = "curtainDrift -fit porousSheet -table " + tableFile.string() + " -out " + out.string();
+    drum::PorousSheetFit f = drum::fitPorousSheet(ptrs, air);
+    f.constants.provenance["command"] = "curtainDrift -fit porousSheet -table " + list + " -out " + out.string();
     drum::writePorousSheetConstants(out, f.constants);
     std::cout << "curtainDrift: porousSheet a = " << f.constants.a << " 1/m, b = " << f.constants.b << " on "
               << f.rows << " table rows, RMS ln residual " << f.rmsLn << (f.converged ? "" : " (NOT converged)")

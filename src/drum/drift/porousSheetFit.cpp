@@ -25,13 +25,11 @@ struct LnResidual
     }
 };
 
-} // namespace
-
-
-PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& gas, const particleDrag::DragLaw& law)
+//- The curtain of every case of a table: the sweep's class mass fractions
+//  over the diameter nodes (header "fixed: ... class_mass_fractions=w1,...");
+//  0 without them
+double tableSauterDiameter(const DriftTable& table)
 {
-    // The curtain of every table case: the sweep's class mass fractions over
-    // the diameter nodes (header "fixed: ... class_mass_fractions=w1,w2,...")
     double d32 = 0;
     if (table.header().count("fixed"))
     {
@@ -53,23 +51,56 @@ PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& 
             d32 = sauterDiameter(d, w);
         }
     }
+    return d32;
+}
+
+} // namespace
+
+
+PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& gas, const particleDrag::DragLaw& law)
+{
+    return fitPorousSheet(std::vector<const DriftTable*>{&table}, gas, law);
+}
+
+
+PorousSheetFit fitPorousSheet
+(
+    const std::vector<const DriftTable*>& tables,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law
+)
+{
+    if (tables.empty()) throw InputError("", "tables", "porousSheet fit needs at least one table");
     std::vector<LnResidual> data;
-    for (const auto& row : table.rows())
+    std::vector<double> d32s;
+    for (const DriftTable* tp : tables)
     {
-        DriftQuery q;
-        q.gasVelocity = row.x[gasVelocityAxis];
-        q.spillRate = row.x[spillRateAxis];
-        q.fallHeight = row.x[fallHeightAxis];
-        q.flightLength = row.x[flightLengthAxis];
-        q.particleDensity = row.x[densityAxis];
-        q.particleDiameter = row.x[diameterAxis];
-        if (!(q.gasVelocity > 0 && q.fallHeight > 0 && q.spillRate > 0 && row.v.vcOverVg > 0)) continue;
-        if (d32 > 0) q.particleDiameter = d32;
-        data.push_back({porousSheetDragNumber(q, gas, law), std::log(row.v.vcOverVg)});
+        const DriftTable& table = *tp;
+        const double d32 = tableSauterDiameter(table);
+        d32s.push_back(d32);
+        for (const auto& row : table.rows())
+        {
+            DriftQuery q;
+            q.gasVelocity = row.x[gasVelocityAxis];
+            q.spillRate = row.x[spillRateAxis];
+            q.fallHeight = row.x[fallHeightAxis];
+            q.flightLength = row.x[flightLengthAxis];
+            q.particleDensity = row.x[densityAxis];
+            q.particleDiameter = row.x[diameterAxis];
+            if (!(q.gasVelocity > 0 && q.fallHeight > 0 && q.spillRate > 0 && row.v.vcOverVg > 0)) continue;
+            if (d32 > 0) q.particleDiameter = d32;
+            data.push_back({porousSheetDragNumber(q, gas, law), std::log(row.v.vcOverVg)});
+        }
     }
+    const std::string files = [&]
+    {
+        std::string f;
+        for (const DriftTable* t : tables) f += (f.empty() ? "" : ",") + t->file().string();
+        return f;
+    }();
     if (data.size() < 3)
     {
-        throw InputError(table.file().string(), "rows", "porousSheet fit needs at least 3 rows with V_g, y, S and "
+        throw InputError(files, "rows", "porousSheet fit needs at least 3 rows with V_g, y, S and "
             "vc_over_vg > 0; the table has " + std::to_string(data.size()));
     }
     // Start: b = 1/2 (screen with bypass), a from the median N (aN ~ 1)
@@ -109,14 +140,25 @@ PorousSheetFit fitPorousSheet(const DriftTable& table, const particleDrag::Gas& 
     }
     fit.rmsLn = std::sqrt(s2/data.size());
     auto& pv = fit.constants.provenance;
-    pv["fittedTo"] = table.file().string();
+    pv["fittedTo"] = files;
     for (const char* key : {"generator", "mesh", "cases", "dictionary"})
     {
-        if (table.header().count(key)) pv[std::string("table_") + key] = table.header().at(key);
+        std::string v;
+        for (const DriftTable* t : tables)
+        {
+            if (!t->header().count(key)) continue;
+            v += (v.empty() ? "" : " | ") + t->header().at(key);
+        }
+        if (!v.empty()) pv[std::string("table_") + key] = v;
     }
     pv["rows"] = std::to_string(fit.rows);
-    pv["curtainDiameter"] = d32 > 0 ? "table Sauter diameter " + std::to_string(d32) + " m"
-                                    : "per class (no class_mass_fractions in the table header)";
+    std::string dtext;
+    for (double d32 : d32s)
+    {
+        dtext += (dtext.empty() ? "" : " | ") + (d32 > 0 ? "table Sauter diameter " + std::to_string(d32) + " m"
+                                                     : std::string("per class (no class_mass_fractions in the table header)"));
+    }
+    pv["curtainDiameter"] = dtext;
     std::ostringstream os;
     os.precision(4);
     os << fit.rmsLn;

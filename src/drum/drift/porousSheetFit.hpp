@@ -27,6 +27,15 @@ PorousSheetFit fitPorousSheet
     const particleDrag::DragLaw& law = {}
 );
 
+//- One fit over the rows of several tables (e.g. one per material: each
+//  table's curtain is its own Sauter diameter); provenance lists them all
+PorousSheetFit fitPorousSheet
+(
+    const std::vector<const DriftTable*>& tables,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law = {}
+);
+
 } // namespace drum
 
 #endif

@@ -170,6 +170,25 @@ TEST(PorousSheet, FitRecoversConstantsOfATableItGenerated)
 }
 
 
+TEST(PorousSheet, OneFitOverSeveralTables)
+{
+    PorousSheetConstants truth;
+    truth.a = 1.9;
+    truth.b = 0.8;
+    const PorousSheetDrift model(truth, air);
+    const auto gen = [&](const synthetic::Point& p) { return model.velocityRatio(query(p)); };
+    const DriftTable t1 = DriftTable::read(loneParticleTable("porousA.csv", gen));
+    const DriftTable t2 = DriftTable::read(loneParticleTable("porousB.csv", gen));
+    const PorousSheetFit fit = fitPorousSheet(std::vector<const DriftTable*>{&t1, &t2}, air);
+    EXPECT_TRUE(fit.converged);
+    EXPECT_EQ(fit.rows, int(t1.size() + t2.size()));
+    EXPECT_NEAR(fit.constants.a/truth.a, 1.0, 1e-4);
+    EXPECT_NEAR(fit.constants.b/truth.b, 1.0, 1e-4);
+    EXPECT_EQ(fit.constants.provenance.at("fittedTo"), t1.file().string() + "," + t2.file().string());
+    EXPECT_THROW(fitPorousSheet(std::vector<const DriftTable*>{}, air), InputError);
+}
+
+
 TEST(DriftFactory, NamesTablesAndErrors)
 {
     const auto f = loneParticleTable("factory.csv", [](const synthetic::Point& p) { return 1.0/(1 + 0.02*p[1]); });
