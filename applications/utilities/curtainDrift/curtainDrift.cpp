@@ -96,6 +96,25 @@ fs::path defaultMaterials()
     return fs::path("..")/"shared"/"data"/"windtunnel_materials.csv";
 }
 
+//- The items of a comma-separated option value ("a,b,c"); an empty item
+//  (",," or a trailing comma) is an InputError naming the option
+std::vector<std::string> commaList(const std::string& list, const std::string& option)
+{
+    std::vector<std::string> items;
+    if (list.empty()) return items;
+    for (std::size_t pos = 0;;)
+    {
+        const auto comma = list.find(',', pos);
+        items.push_back(list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos));
+        if (items.back().empty())
+        {
+            throw drum::InputError("", option, "empty item in '" + list + "' (a comma-separated list)");
+        }
+        if (comma == std::string::npos) return items;
+        pos = comma + 1;
+    }
+}
+
 //- The table file of each material from -table FILE[,FILE...] (models
 //  table and tableVc): a table whose header names a material ('# material:',
 //  buildDriftTable's `material` entry) serves that material; a table
@@ -114,15 +133,7 @@ std::map<std::string, fs::path> tablesByMaterial
     // auto takes a table when given one (else the default, if present)
     if (model != "table" && model != "tableVc" && !(model == "auto" && !list.empty())) return out;
     std::vector<fs::path> files;
-    for (std::size_t pos = 0; pos <= list.size();)
-    {
-        const auto comma = list.find(',', pos);
-        const std::string f = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-        if (f.empty() && !list.empty()) throw drum::InputError("", "-table", "empty file name in '" + list + "'");
-        if (!f.empty()) files.push_back(f);
-        if (comma == std::string::npos) break;
-        pos = comma + 1;
-    }
+    for (const auto& f : commaList(list, "-table")) files.push_back(f);
     if (files.empty()) files.push_back(drum::defaultDriftTableFile());
     fs::path generic;
     for (const auto& f : files)
@@ -306,15 +317,7 @@ int fit(const Args& a)
     const std::string list = a.need("table");
     const fs::path out = a.need("out");
     std::vector<drum::DriftTable> tables;
-    for (std::size_t pos = 0; pos <= list.size();)
-    {
-        const auto comma = list.find(',', pos);
-        const std::string f = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-        if (f.empty()) throw drum::InputError("", "-table", "empty file name in '" + list + "'");
-        tables.push_back(drum::DriftTable::read(f));
-        if (comma == std::string::npos) break;
-        pos = comma + 1;
-    }
+    for (const auto& f : commaList(list, "-table")) tables.push_back(drum::DriftTable::read(f));
     std::vector<const drum::DriftTable*> ptrs;
     for (const auto& t : tables) ptrs.push_back(&t);
     const particleDrag::Gas air = particleDrag::Gas::air(20);
@@ -330,20 +333,14 @@ int fit(const Args& a)
 int score(const Args& a)
 {
     std::vector<curtainDrift::NamedPredictions> preds;
-    std::string list = a.need("predictions");
-    std::size_t pos = 0;
-    while (pos <= list.size())
+    for (const auto& item : commaList(a.need("predictions"), "-predictions"))
     {
-        const auto comma = list.find(',', pos);
-        const std::string item = list.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
         const auto eq = item.find('=');
         if (eq == std::string::npos || eq == 0)
         {
             throw drum::InputError("", "-predictions", "'" + item + "' is not NAME=FILE");
         }
         preds.push_back({item.substr(0, eq), item.substr(eq + 1)});
-        if (comma == std::string::npos) break;
-        pos = comma + 1;
     }
     curtainDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"));
     return 0;

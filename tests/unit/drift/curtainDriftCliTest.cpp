@@ -191,7 +191,7 @@ TEST(CurtainDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest)
              {sand.string() + "," + sand2.string(), "a second table for 'sand'"},
              {uniformTable(0.8).string() + "," + uniformTable(1.0).string(), "two tables without a '# material:' header"},
              {clay.string(), "'clay' is not a material of the materials file"},
-             {sand.string() + ",", "empty file name"}})
+             {sand.string() + ",", "empty item"}})
     {
         r = run("-tests " + tests + " -out " + out.string() + " -model tableVc -table " + list);
         EXPECT_NE(r.rc, 0) << list;
