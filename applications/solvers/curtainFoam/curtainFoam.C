@@ -47,6 +47,7 @@ Description
 #include "gaussConvectionScheme.H"
 #include "upwind.H"
 #include "particleClass.H"
+#include "crossingTrajectories.H"
 
 #include <cmath>
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTurbulenceInteraction.H"
+#include "crossingTrajectories.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
 #include "volFields.H"
@@ -72,7 +73,6 @@ Foam::fv::particleTurbulenceInteraction::damping() const
     const auto& eps = mesh_.lookupObject<volScalarField>(IOobject::groupName("epsilon", gas));
     const auto& Ug = mesh_.lookupObject<volVectorField>(IOobject::groupName("U", gas));
 
-    const dimensionedScalar kSmall("kSmall", k.dimensions(), SMALL);
     const dimensionedScalar epsSmall("epsSmall", eps.dimensions(), SMALL);
     // eddy life time 3/2 Cmu k/eps (Simonin 1990)
     const volScalarField tauEddy(1.5*Cmu_*k/max(eps, epsSmall));
@@ -94,8 +94,7 @@ Foam::fv::particleTurbulenceInteraction::damping() const
         const auto& beta = mesh_.lookupObject<volScalarField>(IOobject::groupName("beta", c));
         const auto& Up = mesh_.lookupObject<volVectorField>(IOobject::groupName("U", c));
         // Csanady's crossing trajectories: the particle leaves the eddy
-        const volScalarField xi2(1.5*magSqr(Up - Ug)/max(k, kSmall));
-        const volScalarField tauT(tauEddy/sqrt(1 + Cbeta_*xi2));
+        const volScalarField tauT(tauEddy*crossingTrajectoryFactor(Up, Ug, k, Cbeta_));
         const dimensionedScalar rhoP("rhoP", dimDensity, solids_.rho(i));
         const volScalarField eta(tauT*beta/rhoP);
         const dimensionedScalar rhoG("rhoG", dimDensity, solids_.rhoGas());
