@@ -87,6 +87,7 @@ Foam::fv::particleTurbulenceInteraction::damping() const
         )
     );
     volScalarField& D = tD.ref();
+    const dimensionedScalar rhoG("rhoG", dimDensity, solids_.rhoGas());
     forAll(solids_.names(), i)
     {
         const word& c = solids_.names()[i];
@@ -97,7 +98,6 @@ Foam::fv::particleTurbulenceInteraction::damping() const
         const volScalarField tauT(tauEddy*crossingTrajectoryFactor(Up, Ug, k, Cbeta_));
         const dimensionedScalar rhoP("rhoP", dimDensity, solids_.rho(i));
         const volScalarField eta(tauT*beta/rhoP);
-        const dimensionedScalar rhoG("rhoG", dimDensity, solids_.rhoGas());
         D += 2*max(alpha, scalar(0))*beta/(rhoG*(1 + eta));
     }
     return tD;
