@@ -197,17 +197,18 @@ int predict(const Args& a)
         }
         o.np = std::stoi(a.get("np", "1"));
         o.drag = a.get("drag");
-        o.particleTurbulence = a.get("particleTurbulence");
-        if (!o.particleTurbulence.empty() && o.particleTurbulence != "none" && o.particleTurbulence != "Simonin")
+        // curtainCase's names, checked here so that a typo stops before the first row runs
+        const auto named = [&](const std::string& option, const std::string& other)
         {
-            throw drum::InputError("", "-particleTurbulence", "'" + o.particleTurbulence + "': valid names are none, Simonin");
-        }
-        o.turbulentDispersion = a.get("turbulentDispersion");
-        if (!o.turbulentDispersion.empty() && o.turbulentDispersion != "none" && o.turbulentDispersion != "gradientDiffusion")
-        {
-            throw drum::InputError("", "-turbulentDispersion", "'" + o.turbulentDispersion
-                + "': valid names are none, gradientDiffusion");
-        }
+            const std::string v = a.get(option);
+            if (!v.empty() && v != "none" && v != other)
+            {
+                throw drum::InputError("", "-" + option, "'" + v + "': valid names are none, " + other);
+            }
+            return v;
+        };
+        o.particleTurbulence = named("particleTurbulence", "Simonin");
+        o.turbulentDispersion = named("turbulentDispersion", "gradientDiffusion");
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());

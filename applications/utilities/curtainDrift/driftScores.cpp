@@ -28,26 +28,24 @@ void writeScores
 )
 {
     const auto measured = drum::readMeasuredAdvance(testsFile);
-    // fall height per test: the scoring side may read the whole file
+    // fall height and material per test: the scoring side may read the whole file
     std::map<int, double> height;
+    std::map<int, std::string> material;
     {
-        // read test,fall_height_m without the material check
-        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(testsFile.string());
-        in.read_header(io::ignore_extra_column, "test", "fall_height_m");
+        // read test,fall_height_m,material without the material check
+        io::CSVReader<3, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(testsFile.string());
+        in.read_header(io::ignore_extra_column, "test", "fall_height_m", "material");
         int t;
         double y;
-        while (in.read_row(t, y)) height[t] = y;
+        std::string m;
+        while (in.read_row(t, y, m))
+        {
+            height[t] = y;
+            material[t] = m;
+        }
     }
     std::set<double> heights;
     for (const auto& kv : height) heights.insert(kv.second);
-    std::map<int, std::string> material;
-    {
-        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(testsFile.string());
-        in.read_header(io::ignore_extra_column, "test", "material");
-        int t;
-        std::string m;
-        while (in.read_row(t, m)) material[t] = m;
-    }
     std::set<std::string> materials;
     for (const auto& kv : material) materials.insert(kv.second);
     std::ostringstream om;
@@ -71,22 +69,34 @@ void writeScores
         const auto& p = predictions[k];
         const auto pred = drum::readMeasuredAdvance(p.file);   // same columns: test,mean_advance_m
         if (pred.empty()) throw drum::InputError(p.file.string(), "", "no predictions");
+        // one CSV row of scores
+        const auto row = [&](std::ostringstream& out, const std::string& label, const drum::PredictionScore& s)
+        {
+            out << p.model << ',' << label << ',' << s.count << ',' << s.rmsLnError << ',' << s.bias << ','
+                << s.within25 << '\n';
+        };
+        // the predictions of the tests whose key (fall height, material) is v
+        const auto subset = [&](const auto& key, const auto& v)
+        {
+            std::map<int, double> sub;
+            for (const auto& kv : pred)
+            {
+                const auto it = key.find(kv.first);
+                if (it != key.end() && it->second == v) sub.insert(kv);
+            }
+            return sub;
+        };
         auto line = [&](const std::string& label, const std::map<int, double>& sub)
         {
             const drum::PredictionScore s = drum::scorePredictions(sub, measured);
-            os << p.model << ',' << label << ',' << s.count << ',' << s.rmsLnError << ',' << s.bias << ','
-               << s.within25 << '\n';
+            row(os, label, s);
             std::cout << std::setw(14) << p.model << std::setw(8) << label << std::setw(6) << s.count
                       << std::fixed << std::setprecision(3) << std::setw(9) << s.rmsLnError << std::setw(9)
                       << s.bias << s.within25 << std::defaultfloat << std::setprecision(6) << "\n";
         };
         for (double y : heights)
         {
-            std::map<int, double> sub;
-            for (const auto& kv : pred)
-            {
-                if (height.count(kv.first) && height.at(kv.first) == y) sub.insert(kv);
-            }
+            const auto sub = subset(height, y);
             std::ostringstream yl;
             yl << y;
             if (!sub.empty()) line(yl.str(), sub);
@@ -94,15 +104,8 @@ void writeScores
         line("all", pred);
         for (const auto& m : materials)
         {
-            std::map<int, double> sub;
-            for (const auto& kv : pred)
-            {
-                if (material.count(kv.first) && material.at(kv.first) == m) sub.insert(kv);
-            }
-            if (sub.empty()) continue;
-            const drum::PredictionScore s = drum::scorePredictions(sub, measured);
-            om << p.model << ',' << m << ',' << s.count << ',' << s.rmsLnError << ',' << s.bias << ','
-               << s.within25 << '\n';
+            const auto sub = subset(material, m);
+            if (!sub.empty()) row(om, m, drum::scorePredictions(sub, measured));
         }
         drum::PlotSeries s{p.model, {}, {}, "points pt " + points[k % points.size()] + " ps 1.3"};
         for (const auto& kv : pred)

@@ -92,12 +92,16 @@ PorousSheetFit fitPorousSheet
             data.push_back({porousSheetDragNumber(q, gas, law), std::log(row.v.vcOverVg)});
         }
     }
-    const std::string files = [&]
+    // items joined with sep
+    const auto joined = [](const std::vector<std::string>& items, const std::string& sep)
     {
-        std::string f;
-        for (const DriftTable* t : tables) f += (f.empty() ? "" : ",") + t->file().string();
-        return f;
-    }();
+        std::string out;
+        for (const auto& i : items) out += (out.empty() ? "" : sep) + i;
+        return out;
+    };
+    std::vector<std::string> names;
+    for (const DriftTable* t : tables) names.push_back(t->file().string());
+    const std::string files = joined(names, ",");
     if (data.size() < 3)
     {
         throw InputError(files, "rows", "porousSheet fit needs at least 3 rows with V_g, y, S and "
@@ -143,22 +147,21 @@ PorousSheetFit fitPorousSheet
     pv["fittedTo"] = files;
     for (const char* key : {"generator", "mesh", "cases", "dictionary"})
     {
-        std::string v;
+        std::vector<std::string> v;
         for (const DriftTable* t : tables)
         {
-            if (!t->header().count(key)) continue;
-            v += (v.empty() ? "" : " | ") + t->header().at(key);
+            if (t->header().count(key)) v.push_back(t->header().at(key));
         }
-        if (!v.empty()) pv[std::string("table_") + key] = v;
+        if (!v.empty()) pv[std::string("table_") + key] = joined(v, " | ");
     }
     pv["rows"] = std::to_string(fit.rows);
-    std::string dtext;
+    std::vector<std::string> dtext;
     for (double d32 : d32s)
     {
-        dtext += (dtext.empty() ? "" : " | ") + (d32 > 0 ? "table Sauter diameter " + std::to_string(d32) + " m"
-                                                     : std::string("per class (no class_mass_fractions in the table header)"));
+        dtext.push_back(d32 > 0 ? "table Sauter diameter " + std::to_string(d32) + " m"
+                                : "per class (no class_mass_fractions in the table header)");
     }
-    pv["curtainDiameter"] = dtext;
+    pv["curtainDiameter"] = joined(dtext, " | ");
     std::ostringstream os;
     os.precision(4);
     os << fit.rmsLn;

@@ -51,8 +51,13 @@ import glob
 # like-for-like on the rows the shipped CFD setup answered (scores_cfd_<level>Rows.csv; the
 # closure variants cfd_<level>_<name> are in the CSV of the scores, not in this chart):
 # the fast references against the CFD
+def shipped_cfd(model):
+    """cfd_<level>: the shipped closure (variants are cfd_<level>_<name>)."""
+    return model.startswith("cfd_") and model.count("_") == 1
+
+
 cfd_files = sorted(f for f in glob.glob(os.path.join(scores_dir, "scores_cfd_*Rows.csv"))
-                   if os.path.basename(f).count("_") == 2)
+                   if shipped_cfd(os.path.basename(f)[len("scores_"):-len("Rows.csv")]))
 same_rows_models = {"isolated", "sherritt", "tableMaterial"}
 cfd_rows = [r for f in cfd_files for r in rows(f) if r["fall_height_m"] == "all"
             and r["model"] in same_rows_models]
@@ -64,7 +69,7 @@ len_all = max(int(r["count"]) for r in scores) if scores else 0
 table = []
 for r in scores:
     t = timing.get(r["model"])
-    if t and int(r["count"]) == len_all or (t and r["model"].startswith("cfd_") and r["model"].count("_") == 1):
+    if t and (int(r["count"]) == len_all or shipped_cfd(r["model"])):
         table.append(dict(source="wind tunnel, the rows the model answered",
                           model=r["model"], rows=r["count"], rms_ln=float(r["rms_ln"]),
                           bias_ln=float(r["bias_ln"]), within25=float(r["within25"]),
