@@ -1,4 +1,4 @@
-// Air properties at 1 atm, as coded by Sherritt 1991 (ROUTINES.C, digest 2.11)
+// Air properties at 1 atm, as coded by Sherritt 1991 (ROUTINES.C, App. B)
 #ifndef PARTICLEDRAG_GASPROPERTIES_HPP
 #define PARTICLEDRAG_GASPROPERTIES_HPP
 

@@ -9,7 +9,7 @@
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
-//       shared/data/windtunnel_tests.csv; the measured advance is never read)
+//       data/windtunnel_tests.csv; the measured advance is never read)
 //   curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table(s)
 //   curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
@@ -21,6 +21,7 @@
 #include "cfdPrediction.hpp"
 #include "driftScores.hpp"
 
+#include "drum/io/projectPaths.hpp"
 #include "drum/drift/driftDictionary.hpp"
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/drift/porousSheetFit.hpp"
@@ -91,9 +92,7 @@ Args parse(int argc, char** argv)
 
 fs::path defaultMaterials()
 {
-    const char* env = std::getenv("DRYER_DATA");
-    if (env) return fs::path(env)/"windtunnel_materials.csv";
-    return fs::path("..")/"shared"/"data"/"windtunnel_materials.csv";
+    return drum::dataDir()/"windtunnel_materials.csv";
 }
 
 //- The items of a comma-separated option value ("a,b,c"); an empty item

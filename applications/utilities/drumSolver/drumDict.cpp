@@ -2,6 +2,7 @@
 
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/projectPaths.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -91,32 +92,6 @@ struct Reader
         return os.str();
     }
 };
-
-std::filesystem::path expandPath(const std::string& raw, const std::filesystem::path& caseDir)
-{
-    std::string s = raw;
-    // $VAR or ${VAR} at the start
-    if (!s.empty() && s[0] == '$')
-    {
-        std::size_t end;
-        std::string var;
-        if (s.size() > 1 && s[1] == '{')
-        {
-            end = s.find('}');
-            var = s.substr(2, end - 2);
-            ++end;
-        }
-        else
-        {
-            end = s.find('/');
-            var = s.substr(1, end == std::string::npos ? std::string::npos : end - 1);
-        }
-        const char* val = std::getenv(var.c_str());
-        s = std::string(val ? val : "") + (end == std::string::npos ? "" : s.substr(end));
-    }
-    std::filesystem::path p(s);
-    return p.is_absolute() ? p : caseDir/p;
-}
 
 drum::SherrittFlightSpec readSherrittFlight
 (
@@ -412,7 +387,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
             throw InputError(r.file, "rtd.tracer.file", "missing: path of the measured tracer CSV");
         }
         TracerFile tf;
-        tf.file = expandPath(t["file"].as<std::string>(), caseDir);
+        tf.file = drum::expandPath(t["file"].as<std::string>(), caseDir, r.file, "rtd.tracer.file");
         if (!std::filesystem::exists(tf.file))
         {
             throw InputError(r.file, "rtd.tracer.file", "tracer file not found: " + tf.file.string());

@@ -550,7 +550,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
 
     // DRUM1 (constant holdup, Sherritt's driver for Sheikh, Kelly, O'Donnell
     // and Saeman): the theta_i sweep and every root F0(theta_i) = feed
-    // (digest 5.1, 8 item 8: overloaded drums can have several)
+    // (Sherritt 1991 §5.1: overloaded drums can have several)
     drum::CsvTable sweepTable({"theta_i_deg", "regime", "valid", "feed_kg_s", "holdup_kg", "airborne_kg",
         "discharging_kg", "nondischarging_kg", "airborne_holdup_fraction", "airborne_flow_fraction"});
     const double kgPerM = d.bulkDensity*d.length;

@@ -3,15 +3,13 @@
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/projectPaths.hpp"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cstdlib>
 
-#ifndef DRYER_PROJECT_DIR
-#define DRYER_PROJECT_DIR "."
-#endif
 
 namespace drum
 {
@@ -25,9 +23,7 @@ const std::vector<std::string>& driftModelNames()
 
 std::filesystem::path defaultDriftTableFile()
 {
-    const char* env = std::getenv("DRYER_PROJECT");
-    const std::filesystem::path root = env ? env : DRYER_PROJECT_DIR;
-    return root/"cases"/"driftTable"/"driftTable.csv";
+    return defaultsDir()/"driftTables"/"driftTable.csv";
 }
 
 
@@ -81,8 +77,8 @@ DriftSettings readDriftSettings
     }
     auto path = [&](const char* key)
     {
-        std::filesystem::path p = scalar(d[key], file, std::string("drift.") + key);
-        if (p.is_relative()) p = caseDir/p;
+        const std::string entry = std::string("drift.") + key;
+        const std::filesystem::path p = expandPath(scalar(d[key], file, entry), caseDir, file, entry);
         if (!std::filesystem::exists(p))
         {
             throw InputError(file, std::string("drift.") + key, "file not found: " + p.string());

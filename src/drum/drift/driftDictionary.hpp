@@ -4,11 +4,12 @@
 //   model:
 //     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet | auto
 //   drift:                 # optional
-//     table: path          # CFD drift table, relative to the case folder;
-//                          # default $DRYER_PROJECT/cases/driftTable/driftTable.csv
+//     table: path          # CFD drift table, relative to the case folder or
+//                          # starting with $DRYER_PROJECT or $DRYER_DATA;
+//                          # default $DRYER_PROJECT/etc/defaults/driftTables/driftTable.csv
 //     outside: refuse      # refuse (default) | clamp, queries outside the table
 //     constants: path      # porousSheet constants; default
-//                          # $DRYER_PROJECT/cases/driftModels/porousSheet.yaml
+//                          # $DRYER_PROJECT/etc/defaults/driftModels/porousSheet.yaml
 //     auto:                # with model.drift auto (autoDrift.hpp), optional
 //       inside: tableVc    # table | tableVc: the model inside the table
 //       diluteRatio: 0.95  # porousSheet V_c/V_g above which lone particles serve
@@ -49,7 +50,7 @@ struct DriftSettings
 //- Every drift-model name makeDriftModel knows
 const std::vector<std::string>& driftModelNames();
 
-//- $DRYER_PROJECT (or the source tree)/cases/driftTable/driftTable.csv
+//- drum::defaultsDir()/driftTables/driftTable.csv (etc/defaults of the checkout)
 std::filesystem::path defaultDriftTableFile();
 
 //- Read model.drift and the optional drift section of `root` (the YAML of

@@ -4,7 +4,7 @@
 // so the lone-particle law, Sherritt's sheet correction (Eq 142) or a CFD
 // drift table plug in here.
 //
-// Sign convention (Sherritt, digest 0): +x is the direction of the gas flow,
+// Sign convention (Sherritt 1991, docs/errata.md S12): +x is the direction of the gas flow,
 // gasVelocity >= 0, incline > 0 when the drum slopes down along the gas.
 #ifndef DRUM_DRIFT_DRIFTMODEL_HPP
 #define DRUM_DRIFT_DRIFTMODEL_HPP

@@ -2,6 +2,7 @@
 
 #include "drum/io/atomicFile.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/projectPaths.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 
 #include <yaml-cpp/yaml.h>
@@ -12,18 +13,13 @@
 #include <limits>
 #include <sstream>
 
-#ifndef DRYER_PROJECT_DIR
-#define DRYER_PROJECT_DIR "."
-#endif
 
 namespace drum
 {
 
 std::filesystem::path defaultPorousSheetConstantsFile()
 {
-    const char* env = std::getenv("DRYER_PROJECT");
-    const std::filesystem::path root = env ? env : DRYER_PROJECT_DIR;
-    return root/"cases"/"driftModels"/"porousSheet.yaml";
+    return defaultsDir()/"driftModels"/"porousSheet.yaml";
 }
 
 

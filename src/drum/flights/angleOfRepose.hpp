@@ -1,6 +1,6 @@
 // Dynamic (kinetic) angle of repose relations, each with its source:
 //  - Schofield & Glikin (1962) kinetic angle, in the form and angle
-//    convention of Sherritt 1991 Eq 6-7 (digest sherritt1991.md §1.2, checked
+//    convention of Sherritt 1991 Eq 6-7 (Sherritt 1991 §2.2, checked
 //    there: spread 4.58 deg at Fr = 0.04). Lee 2008 prints it as Eq 2.1 with
 //    psi in another convention; we use Sherritt's transcription.
 //  - Britton et al. (2006) raw-sugar moisture relation, Lee 2008 Eq 7.2, and

@@ -160,7 +160,7 @@ LeeFlight::LeeFlight(const FlightGeometry& g, double phiDeg, const std::string& 
         }
     }
 
-    // Helpers of §4.2.3.1 (digest §2.5)
+    // Helpers of Lee 2008 §4.2.3.1 (docs/errata.md L1, L3)
     sft_ = 2.0*rf_*std::sin(psifl_/2.0);
     aft_ = a2p_ - pi/2 - psift_ + psifl_/2.0;           // explicit alpha_ft (§8.3)
     sa_ = std::sqrt(s2*s2 + sft_*sft_ - 2.0*s2*sft_*std::cos(aft_));

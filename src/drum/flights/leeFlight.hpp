@@ -1,7 +1,7 @@
 // Lee 2008 Chapter 4: geometric unloading of straight, unserrated two-section
 // flights (base s1 at angle alpha1 to the wall, tip s2 at angle alpha2 to the
 // base), material surface a straight line through the tip at the dynamic
-// angle of repose phi (digest ../shared/notes/lee2008.md §2, errata §8).
+// angle of repose phi (Lee 2008 Ch. 4; errata in docs/errata.md L1-L4).
 //
 // Frame used throughout: drum centre at the origin, x horizontal, y up, the
 // drum turning counter-clockwise (the rising side is x > 0). psi is the angle
@@ -9,7 +9,7 @@
 // of rotation, so the root sits at R (sin psi, -cos psi) and the tip at
 // R_F (sin(psi + psi_ft), -cos(psi + psi_ft)). A flight's material lies
 // between its leading face and the back of the next flight (at psi + psi_fl),
-// below the surface line (digest §2.1, §8 item 19).
+// below the surface line (Lee 2008 §4.2; docs/errata.md L19).
 //
 // Every quantity is per metre of flight length; angles in the public API are
 // in degrees, as in the thesis.
@@ -111,7 +111,7 @@ public:
 
     //- The material at psi found by clipping the cell with the surface line
     //  (full cell for psi <= psi1, empty for psi >= psi5): the independent
-    //  polygon route of digest §2.6
+    //  polygon-clipping route (polygonClip.hpp)
     Polygon materialPolygon(double psiDeg, int arcSegments = 400) const;
 
 private:

@@ -1,7 +1,7 @@
 // Plane polygons for flight holdup: area (shoelace) and clipping by the
 // half-plane below a straight material surface. An independent route to the
 // flight holdup that works for any flight outline or back plate, used as the
-// cross-check of Lee's closed-form phase equations (digest §2.6 [check]).
+// cross-check of Lee's closed-form phase equations (Lee 2008 §4.2.3.2).
 #ifndef DRUM_FLIGHTS_POLYGONCLIP_HPP
 #define DRUM_FLIGHTS_POLYGONCLIP_HPP
 

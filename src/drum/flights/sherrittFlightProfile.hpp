@@ -1,8 +1,8 @@
-// Sherritt 1991's flight description (digest 2.3, code `facelength`): a
+// Sherritt 1991's flight description (§3.2, code `facelength`): a
 // flight is a table of (rotation angle theta of the tip, length of the
 // HORIZONTAL line from the tip back to the wall or to the flight itself).
 //
-// Angle convention (digest 0): theta is measured in the direction of
+// Angle convention (Sherritt 1991 nomenclature): theta is measured in the direction of
 // rotation from the horizontal centreline; theta = 0 where the tip crosses
 // the centreline moving down, so (0, pi) is the lower half and (pi, 2 pi) the
 // upper half. An exterior flight discharges over theta_i <= theta <= 2 pi; an
@@ -10,7 +10,7 @@
 //
 // The discharging surface lies at the kinetic angle of repose phi, so the
 // surface length at rotation theta is the tabulated horizontal length at
-// theta - phi (digest 2.3). Everything that depends on phi lives in
+// theta - phi (§3.2). Everything that depends on phi lives in
 // SherrittFlightSurface (sherrittFlightSurface.hpp).
 #ifndef DRUM_FLIGHTS_SHERRITTFLIGHTPROFILE_HPP
 #define DRUM_FLIGHTS_SHERRITTFLIGHTPROFILE_HPP
@@ -61,7 +61,7 @@ public:
 
     //- Tabulated horizontal length at a rotation angle: piecewise-linear
     //  interpolation, linear extrapolation past the ends (as `interp()` in
-    //  Sherritt's code, digest 5.2). Not clamped: may be negative outside.
+    //  Sherritt's code, App. B). Not clamped: may be negative outside.
     double horizontalLength(double angle) const;
 
     //- Throw drum::InputError unless the tips lie strictly inside a wall of

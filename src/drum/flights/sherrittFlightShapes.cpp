@@ -26,7 +26,7 @@ void requireAngle(double value, double lo, double hi, const char* entry)
     }
 }
 
-// Rotate a reference-frame point to the tip angle theta (digest 0:
+// Rotate a reference-frame point to the tip angle theta (Sherritt 1991 nomenclature:
 // tip at (R cos theta, -R sin theta))
 Vec toWorld(const Vec& p, double theta)
 {

@@ -1,5 +1,5 @@
-// Generators of Sherritt flight tables from flight cross-sections (digest
-// 1.3, 2.3, 8 item 1): the thesis measured (angle, horizontal tip-to-surface
+// Generators of Sherritt flight tables from flight cross-sections (Sherritt
+// 1991 §2.3, §3.2): the thesis measured (angle, horizontal tip-to-surface
 // length) off drawings; here the drawing is a polyline and the length is
 // found by casting the horizontal line from the tip.
 //
@@ -10,7 +10,7 @@
 //
 // Tabulation rule at rotation theta (tip at (R cos theta, -R sin theta)):
 //  * the horizontal line runs from the tip towards -x, i.e. back against the
-//    rotation over the upper half where flights discharge (digest 2.3);
+//    rotation over the upper half where flights discharge (Sherritt 1991 §3.2);
 //  * the material below it is held only if the flight edge at the tip runs
 //    downwards from the tip (otherwise material would slide off the tip):
 //    the length is then 0, unless the tip is below the drum axis: there

@@ -3,7 +3,7 @@
 // One builder for every user (drumSolver's drumDict, the validation
 // tests), so a case written down once gives the same table everywhere.
 //
-// Types (digest 1.3, 8 item 1; shapes in sherrittFlightShapes.hpp):
+// Types (Sherritt 1991 §2.3; shapes in sherrittFlightShapes.hpp):
 //   twoSided  base plate s1 at baseAngle to the shell, tip plate s2 at
 //             tipAngle to the base (Fig 2.2a; Sheikh, Saeman, Kamke)
 //   EAD       equal angular distribution arc of `radius` about the tip at

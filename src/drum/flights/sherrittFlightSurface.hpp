@@ -1,5 +1,5 @@
 // A Sherritt flight at a given kinetic angle of repose phi: the discharging
-// surface length l(theta) = max(0, table(theta - phi)) (digest 2.3), the
+// surface length l(theta) = max(0, table(theta - phi)) (Sherritt 1991 §3.2), the
 // discharge rate dm/dt = pi n rho_b l^2 (Sherritt 1991 Eqs 40/41) and the
 // flight holdup as the integral of the discharge (Eqs 97/98), with the
 // initial discharge angle as its inverse.

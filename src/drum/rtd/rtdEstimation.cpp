@@ -18,7 +18,7 @@ namespace
 //- Residuals r = model(x) - measured with a finite-difference Jacobian that
 //  is central where both neighbours are feasible and one-sided where the
 //  optimum presses against a constraint the model enforces itself (Lee's
-//  C_F + C_B <= 1 is one: the Invicta fits end there, digest §5.1)
+//  C_F + C_B <= 1 is one: the Invicta fits end there, Lee 2008 Table 7.2)
 class ResidualCost : public ceres::CostFunction
 {
 public:

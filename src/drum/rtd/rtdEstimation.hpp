@@ -86,7 +86,7 @@ double leeMaxForwardFraction0(const LeeDryer& dryer, int nSlices);
 
 //- Lee parameters from named values. "forwardShare" s in [0, 1] stands for
 //  C_F^G = s (1 - C_B)/max_i C_F^0_i, which keeps C_R = 1 - C_F - C_B >= 0
-//  in every slice: Lee's fits end on that constraint (digest §5.1), where
+//  in every slice: Lee's fits end on that constraint (Lee 2008 Table 7.2), where
 //  a box-bounded optimiser in (t_kiln, C_B, C_F^G) stalls.
 //  "designLoadMultiplier" goes into *modified when given.
 LeeParameters leeParametersFrom

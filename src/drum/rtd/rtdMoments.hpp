@@ -6,7 +6,7 @@
 //   variance  s2 = int (t - mu)^2 E dt / m0,   SD = sqrt(s2)
 //   skewness  g1 = int (t - mu)^3 E dt / (m0 SD^3)   (standardised, dimensionless)
 // Lee's Table 7.3 prints a "skewness (min)" of unstated definition; it is
-// not this one (digest lee2008.md §8 item 18).
+// not this one (docs/errata.md L18).
 #ifndef DRUM_RTD_RTDMOMENTS_HPP
 #define DRUM_RTD_RTDMOMENTS_HPP
 

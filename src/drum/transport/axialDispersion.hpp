@@ -1,7 +1,7 @@
 // Axial dispersion of a rolling/kilning bed: Sherritt (2001) design
 // correlation D_z = k (n/n_c)^a (2R)^b d_p^c X^d (Eq 51, Table 3-3; the
 // rolling/cascading set is Eq 84), with the bed regime from the relative
-// speed n/n_c (Eq 1, digest sherritt2001.md 1) and the fitted range flagged.
+// speed n/n_c (Sherritt 2001 Eq 1) and the fitted range flagged.
 // SI units: D_z m2/s, 2R and d_p in m, X volume fraction, n/n_c fraction.
 #ifndef DRUM_TRANSPORT_AXIALDISPERSION_HPP
 #define DRUM_TRANSPORT_AXIALDISPERSION_HPP
@@ -40,7 +40,7 @@ double criticalSpeed(double drumDiameter);
 BedRegime bedRegime(double speedRatio);
 
 //- Fill fraction of a bed segment of central angle beta: (beta - sin beta)/(2 pi)
-//  (Eq 16 with the digest's 1/pi erratum)
+//  (Eq 16 with its missing 1/pi, docs/errata.md D1)
 double segmentFillFraction(double beta);
 
 struct AxialDispersionInput
@@ -62,7 +62,7 @@ struct AxialDispersionResult
 };
 
 //- D_z from Eq 51. Throws InputError for non-positive inputs or n >= n_c.
-//  X below 0.03 is clamped to 0.03 (D_z ~ X^-0.55 diverges; digest 9.2) and
+//  X below 0.03 is clamped to 0.03 (D_z ~ X^-0.55 diverges) and
 //  every departure from the fitted range (n/n_c 0.03-0.3 for the rolling set,
 //  X < 0.5, 2R 0.05-0.6 m, d_p 0.125-13 mm) is listed in warnings.
 AxialDispersionResult sherritt2001AxialDispersion(const AxialDispersionInput& in, const std::string& file = "");

@@ -1,5 +1,5 @@
 // Literature baselines for the mean residence time and RTD of flighted
-// rotary drums (digests: sherritt1991.md §1.1, §1.5, §7; lee2008.md §4.4).
+// rotary drums (as reviewed in Sherritt 1991 §2.1, §2.5 and Lee 2008 Ch. 2).
 // SI in and out unless stated; n is the drum speed in rev/s.
 #ifndef DRUM_TRANSPORT_BASELINES_HPP
 #define DRUM_TRANSPORT_BASELINES_HPP
@@ -16,7 +16,7 @@ enum class GasFlow { coCurrent, counterCurrent };
 //  L and D in ft, N in rpm, S slope in ft/ft, G and F gas and solids mass
 //  fluxes in the same units); + countercurrent, - cocurrent. Sherritt 1991
 //  Eq 3 and Lee 2008 Eqs 2.5-2.6 print converted variants whose constants
-//  could not be checked (digest notes); this is the original's structure.
+//  could not be checked against the originals; this is the original's structure.
 //  Returns T in s.
 double friedmanMarshall
 (

@@ -77,7 +77,7 @@ LeeCorrelationValues leeCorrelations
     // App. 10.2.3: t_flight = 2(mafa - pi/2)/(omega 2 pi/60)
     const double omega = rpm*2.0*pi/60.0;
     v.flightTime = 2.0*(v.releaseAngle - pi/2.0)/omega;
-    // Passive time actually used for Ch. 7 (digest §7 item 2, §8 item 6):
+    // Passive time actually used for Ch. 7 (docs/errata.md L6):
     // t_p = 60/rpm - t_flight, i.e. Eq 3.4 with the descending-side release
     // point 360 deg - mafa
     v.passiveTime = 60.0/rpm - v.flightTime;

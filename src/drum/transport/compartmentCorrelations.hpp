@@ -5,7 +5,7 @@
 // s1 = 0.195 m, s2 = 0.183 m, alpha2 = 117 deg, 28 flights); any other drum
 // needs them regenerated from the geometric model.
 //
-// The printed Eqs 4.24-4.28 carry coefficient errors (digest lee2008.md §8
+// The printed Eqs 4.24-4.28 carry coefficient errors (docs/errata.md L5
 // item 5), so the full-precision Appendix 10.2.3 gPROMS code forms are used.
 #ifndef DRUM_TRANSPORT_COMPARTMENTCORRELATIONS_HPP
 #define DRUM_TRANSPORT_COMPARTMENTCORRELATIONS_HPP
@@ -35,7 +35,7 @@ struct LeeCorrelationValues
     double fallTime;        //!< maft, mass-averaged fall time = active time, s (Eq 4.25 code form)
     double releaseAngle;    //!< mafa = asin(maf_h/2R_F) + pi/2, rad (Eq 4.26)
     double flightTime;      //!< t_flight = 2(mafa - pi/2)/omega, s (code line)
-    double passiveTime;     //!< t_p = 60/rpm - t_flight, s (digest §7 item 2, §8)
+    double passiveTime;     //!< t_p = 60/rpm - t_flight, s (docs/errata.md L6)
     double designLoadPerLength; //!< m_des/(L/N), kg/m (Eq 4.27 code form)
 };
 

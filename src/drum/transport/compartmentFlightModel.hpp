@@ -10,7 +10,7 @@
 //                      d(psi, D_p) of the fall from the drift model (incline
 //                      and gas drag, solids frame); C_F = sum w max(d, 0)/dL,
 //                      C_B = sum w max(-d, 0)/dL, w the released mass share
-// No parameter is fitted except t_kiln. As the digest (§8 item 6) warns,
+// No parameter is fitted except t_kiln. As docs/errata.md L6 explains,
 // the geometric release point is on the rising side and gives passive times
 // of ~5 s, far from the ~11 s of Lee's correlations: this option is
 // geometrically self-consistent, not a reproduction of Ch. 7.

@@ -16,7 +16,7 @@ namespace drum
 {
 
 //- Operating data and geometry (defaults: Invicta Mill dryer No. 2 as in the
-//  gPROMS process entity, digest lee2008.md §4.2)
+//  gPROMS process entity, Lee 2008 App. 10.1)
 struct LeeDryer
 {
     double length = 12.0;            //!< L, m

@@ -5,7 +5,7 @@
 // when the drum falls towards the solids discharge, flows are positive
 // towards the discharge. The gas flows with (cocurrent) or against
 // (countercurrent) the solids; internally the model maps this onto
-// Sherritt's gas-direction frame (digest 2.12).
+// Sherritt's gas-direction frame (docs/errata.md S12).
 #ifndef DRUM_TRANSPORT_TWOPHASECASE_HPP
 #define DRUM_TRANSPORT_TWOPHASECASE_HPP
 
@@ -67,7 +67,7 @@ struct TwoPhaseOptions
     std::optional<double> imposedDenseFlow;
 
     //- Eq 93 as geometry says (tip height minus wall-top height) instead of
-    //  the printed/coded plus sign (digest 2.6, 9)
+    //  the printed/coded plus sign (docs/errata.md S5)
     bool geometricWallFall = false;
 
     //- Lowest discharge angle searched (the code's DRUM1 sweep starts at 40 deg)

@@ -189,7 +189,7 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     drift_ = case_.options.drift ? case_.options.drift : std::make_shared<SherrittSheetDrift>(air);
     const bool counter = gas.direction == GasFlow::countercurrent && gas.massRate > 0;
     toSolids_ = counter ? -1.0 : 1.0;
-    alphaGas_ = counter ? -d.slope : d.slope;  // digest 2.12: alpha < 0 counter-current
+    alphaGas_ = counter ? -d.slope : d.slope;  // docs/errata.md S12: alpha < 0 counter-current
     if (!case_.options.closure)
     {
         throw InputError(file, "model.closure", "no surface closure given");
@@ -267,7 +267,7 @@ double TwoPhaseModel::exteriorFallHeight(double theta) const
             return -0.5*Dex*s;  // Eq 94: down to the centreline
         }
     }
-    // Eq 92, applied by the code over the whole 0 < theta < 2 pi (digest 2.6)
+    // Eq 92, applied by the code over the whole 0 < theta < 2 pi (docs/errata.md S5)
     return 0.5*Do*(std::sin(std::acos(Dex/Do*c)) - Dex/Do*s);
 }
 
@@ -571,7 +571,7 @@ void TwoPhaseModel::solveFeed(TwoPhaseState& s) const
         {
             std::ostringstream os;
             os << "size class " << i << " (" << case_.material.sieveSizes[i]*1e6
-               << " um) would move against the solids flow: x_d < 0 (digest 2.5)";
+               << " um) would move against the solids flow: x_d < 0 (Sherritt 1991 §3.4)";
             s.valid = false;
             s.note = os.str();
             return;

@@ -1,9 +1,9 @@
-// Sherritt (1991) two-phase drum model (Chapter 3, digest 2): solids move
+// Sherritt (1991) two-phase drum model (Chapter 3): solids move
 // as an airborne phase (falling curtains, size dependent, Eqs 45-55) and a
 // dense phase (rolling surfaces in the flights, size independent, Eqs
 // 56-86); the holdup follows from integrating the flight discharge (Eqs
 // 87-127). Loading is characterised by the exterior flights' initial
-// discharge angle theta_i (digest 2.1).
+// discharge angle theta_i (§3.1).
 //
 //  * atDischargeAngle(theta_i): one DRUM1 step (constant holdup, gamma = 0)
 //  * solveConstantHoldup(F0): DRUM1 inverted for the feed, every root
@@ -103,7 +103,7 @@ struct TwoPhaseResult
 struct AxialOptions
 {
     //- theta_i at the solids discharge end; unset: 2 degrees below the
-    //  flights' final discharge angle (no weir, digest 5.3)
+    //  flights' final discharge angle (no weir, Sherritt 1991 §3.7)
     std::optional<double> dischargeEndAngle;
 };
 

@@ -1,7 +1,7 @@
 // The dense-phase surface closure of Sherritt's two-phase model: how many
 // non-discharging flights carry a rolling surface that slopes along the
 // drum, and how long that surface (chord c) is. The thesis calls it the
-// model's weakest point (digest 2.7, 6.6), so it is pluggable.
+// model's weakest point (Sherritt 1991 §3.5, §5.1.10), so it is pluggable.
 #ifndef DRUM_TRANSPORT_TWOPHASESURFACECLOSURE_HPP
 #define DRUM_TRANSPORT_TWOPHASESURFACECLOSURE_HPP
 

@@ -18,7 +18,7 @@
 //     from the Eq 51/84 correlation) as a symmetric exchange
 //     D_eff M/dz^2 between neighbouring dense compartments, with the
 //     upwind scheme's numerical part u_2 dz/2 subtracted (Sherritt 2001
-//     digest 9.2 item 4).
+//     docs/errata.md, coupling note).
 // Feed enters the first slice's dense phase; what passes the last slice
 // leaves. Falls that would land before the feed end stay in the first slice.
 // Per class the network's holdup/feed equals Sherritt's T_k (Eq 139) up to

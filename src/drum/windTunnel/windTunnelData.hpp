@@ -1,6 +1,6 @@
 // Sherritt 1991 wind-tunnel curtain tests (Appendix A): the test conditions
 // (Table A.2) and the materials with their size distributions (Table A.1),
-// read from CSV files with the columns of shared/data. The reader of test
+// read from CSV files with the columns of data/ (data/README.md). The reader of test
 // conditions never reads the measured advance: predictions cannot see it.
 #ifndef DRUM_WINDTUNNEL_WINDTUNNELDATA_HPP
 #define DRUM_WINDTUNNEL_WINDTUNNELDATA_HPP
@@ -43,7 +43,7 @@ struct WindTunnelTest
 };
 
 //- How the open sieve bins are closed and classes represented (the
-//  reference predictions' choice, shared/data README section 1)
+//  reference predictions' choice, data/README.md)
 struct SieveClosure
 {
     double topUm = 4760;     //!< upper bound given to the open top bin

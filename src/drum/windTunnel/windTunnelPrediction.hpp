@@ -1,6 +1,6 @@
 // A drift model's prediction of a wind-tunnel test's bulk mean advance: the
 // mass-weighted mean over the material's size classes (geometric-mean
-// diameters, open bins closed as in the shared/data README section 1), the
+// diameters, open bins closed as in data/README.md), the
 // way the reference predictions and tests/unit/windTunnel score them.
 #ifndef DRUM_WINDTUNNEL_WINDTUNNELPREDICTION_HPP
 #define DRUM_WINDTUNNEL_WINDTUNNELPREDICTION_HPP

@@ -19,7 +19,7 @@ using namespace drum;
 
 std::array<std::vector<double>, 6> grid(bool sixAxes)
 {
-    // the shipped table's sweep (cases/driftTable/driftTableDict)
+    // the shipped table's sweep (etc/defaults/driftTables/driftTableDict)
     std::array<std::vector<double>, 6> g{{{1.4, 4, 8.6}, {0.2, 2, 10, 35}, {0.5, 1, 2, 3.5, 6.6, 10.3},
                                           {1, 2}, {1200, 2650}, {74e-6, 150e-6, 300e-6, 840e-6, 2.4e-3}}};
     if (!sixAxes)

@@ -10,7 +10,7 @@ using namespace drum;
 
 TEST(LeeCorrelations, TipRadiusOfInvictaFlight)
 {
-    // Digest lee2008.md §2.5 helper values: R_F = 2.22789 m
+    // Lee 2008 §4.2.3.1 helper values (data/lee_transition_points.csv): R_F = 2.22789 m
     EXPECT_NEAR(LeeFlightGeometry{}.tipRadius(), 2.22789, 5e-6);
     // L-shaped flight (alpha2 = 90 deg): R_F^2 = (R - s1)^2 + s2^2
     LeeFlightGeometry lShape;

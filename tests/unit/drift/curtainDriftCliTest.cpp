@@ -3,6 +3,7 @@
 // with a uniform V_c/V_g against them too, cfd through a stand-in
 // curtainCase), the score mode against the data README's RMS values, and bad
 // input: clear errors, no output file, an existing output left untouched.
+#include "drum/io/projectPaths.hpp"
 #include "drum/io/csv.hpp"
 #include "drum/windTunnel/windTunnelData.hpp"
 #include "particleDrag/loneParticleFall.hpp"
@@ -22,7 +23,7 @@ namespace fs = std::filesystem;
 namespace
 {
 
-const fs::path data = std::getenv("DRYER_DATA") ? std::getenv("DRYER_DATA") : DRYER_DATA_DIR;
+const fs::path data = drum::dataDir();
 
 fs::path dir()
 {
@@ -225,7 +226,7 @@ TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
         else ++rowsPerHeight;
     }
     EXPECT_EQ(rowsPerHeight, 4);   // 6.6 and 10.3 m for two models
-    EXPECT_NEAR(overall.at("isolated"), 0.88, 0.005);   // shared/data README
+    EXPECT_NEAR(overall.at("isolated"), 0.88, 0.005);   // data/README.md
     EXPECT_NEAR(overall.at("sherritt"), 0.34, 0.005);
     // per material: the shared rows' counts, and the squares add up to the overall RMS
     io::CSVReader<4> bm(byMat.string());

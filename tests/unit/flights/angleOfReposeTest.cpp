@@ -25,7 +25,7 @@ double spread(double mu, double fr)
 TEST(AngleOfRepose, SchofieldGlikinSpreadMatchesSherritt)
 {
     // Sherritt 1991 §3.1.4: 4.6 deg at Fr = 0.04, 0.3 deg at Fr = 0.0025
-    // (digest recheck 4.58 / 0.29, independent of mu)
+    // (hand recheck 4.58 / 0.29, independent of mu)
     for (double mu : {0.5, 0.8, 1.2})
     {
         EXPECT_NEAR(spread(mu, 0.04), 4.58, 0.02);

@@ -1,5 +1,5 @@
-// Lee 2008 Ch. 4 geometric flight model: hand values from the digest's
-// independent check (lee2008.md §2.5-2.6), the polygon-clipping cross-check,
+// Lee 2008 Ch. 4 geometric flight model: hand values from an independent
+// implementation of Lee 2008 §4.2.3.1-4.2.3.2, the polygon-clipping cross-check,
 // exact derivative, mass conservation and refusal of impossible flights.
 #include "drum/flights/leeFlight.hpp"
 #include "drum/io/inputError.hpp"
@@ -44,7 +44,7 @@ double integrate(const std::function<double(double)>& f, double a, double b, dou
 } // namespace
 
 
-TEST(LeeFlight, InvictaHelperValuesMatchDigest)
+TEST(LeeFlight, InvictaHelperValuesMatchHandCalculation)
 {
     const drum::LeeFlight f(invicta(), 30.0);
     EXPECT_NEAR(f.tipRadius(), 2.2279, 1e-4);
@@ -63,9 +63,9 @@ TEST(LeeFlight, InvictaHelperValuesMatchDigest)
 }
 
 
-TEST(LeeFlight, AreaMatchesDigestTestVectors)
+TEST(LeeFlight, AreaMatchesIndependentTestVectors)
 {
-    // lee2008.md §2.6 table (m^2 per m), computed there by an independent code
+    // areas (m^2 per m) from an independent implementation of Lee 2008 §4.2.3.2
     const double psi[] = {0, 40, 60, 85.8, 90, 100, 120, 150, 170, 190};
     const double a30[] = {0.14901, 0.12019, 0.09180, 0.06212, 0.05875, 0.05144, 0.03828,
                           0.01625, 0.00438, 0.0};
@@ -86,7 +86,7 @@ TEST(LeeFlight, AreaMatchesDigestTestVectors)
 TEST(LeeFlight, ClosedFormAgreesWithPolygonClipping)
 {
     // Perpendicular Invicta flight, and non-perpendicular flights that test
-    // the Eq 4.16 erratum (sin alpha2' and s1 s1', digest §8.4)
+    // the Eq 4.16 erratum (sin alpha2' and s1 s1', docs/errata.md L4)
     for (double a1 : {90.0, 80.0, 100.0, 110.0})
     {
         drum::FlightGeometry g = invicta();

@@ -1,5 +1,5 @@
 // Release conditions, discharge profile and flight-level results of one Lee
-// 2008 flight: hand values, limits and the digest's independent numbers.
+// 2008 flight: hand values, limits and independently computed numbers.
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/inputError.hpp"
 
@@ -73,16 +73,16 @@ TEST(UnloadingModel, MovingLayerFromLeeCfdCurtain)
 }
 
 
-TEST(UnloadingModel, FlightLevelResultsAgainstDigest)
+TEST(UnloadingModel, FlightLevelResultsAgainstIndependentCheck)
 {
-    // lee2008.md §8.6: Ch. 4 + Eq 3.3 from the tip horizontal gives a mean
+    // docs/errata.md L6: Ch. 4 + Eq 3.3 from the tip horizontal gives a mean
     // release (root) angle of about 130 deg at phi 30 and 137 deg at phi 60
     auto s = sugar();
     const drum::UnloadingModel m30(drum::LeeFlight(invicta(), 30.0), s);
     const drum::UnloadingModel m60(drum::LeeFlight(invicta(), 60.0), s);
     EXPECT_NEAR(m30.meanReleaseAngleDeg(), 130.0, 1.0);
     EXPECT_NEAR(m60.meanReleaseAngleDeg(), 137.0, 1.0);
-    // Eq 3.3's passive cycle (2 psi_bar - 180)/omega is 4.5-5.3 s (digest)
+    // Eq 3.3's passive cycle (2 psi_bar - 180)/omega is 4.5-5.3 s (docs/errata.md L6)
     const double tp30 = (2.0*m30.meanReleaseAngleDeg() - 180.0)/(3.0*6.0);
     EXPECT_GT(tp30, 4.4);
     EXPECT_LT(tp30, 5.4);
@@ -93,7 +93,7 @@ TEST(UnloadingModel, FlightLevelResultsAgainstDigest)
     const drum::UnloadingModel m50(drum::LeeFlight(invicta(), 50.0), s);
     EXPECT_NEAR(m50.porterDesignLoad(), 13062.0, 15.0);
     EXPECT_NEAR(m50.porterDesignLoad()/13109.0, 1.0, 0.005);
-    // Eq 4.21 (digest §8.7: 7 344-7 376 kg; the thesis prints 8 479)
+    // Eq 4.21 (docs/errata.md L7: 7 344-7 376 kg; the thesis prints 8 479)
     EXPECT_NEAR(m50.designLoad(), 7344.0, 15.0);
 }
 
@@ -131,7 +131,7 @@ TEST(UnloadingModel, LoadingFactorNearLeeFit)
 {
     // Lee 2008 Eq 4.23, Lee's fit (r^2 0.9986) of his own Eq 4.22 results for
     // Invicta (printed rounded; 0.903 at d = 1). The phi is not stated; the
-    // Porter load quoted with it matches phi = 50 (digest §8.7).
+    // Porter load quoted with it matches phi = 50 (docs/errata.md L7).
     const drum::UnloadingModel m(drum::LeeFlight(invicta(), 50.0), sugar());
     for (double d = 0.1; d < 0.96; d += 0.05)
     {

@@ -1,7 +1,8 @@
 // The lone-particle model against the reference predictions of
-// shared/data/windtunnel_reference_predictions.csv (Sherritt's ADVANCE.C
+// data/windtunnel_reference_predictions.csv (Sherritt's ADVANCE.C
 // falladvance(), computed independently): methods (a) V = V_g and
 // (b) V = Eq 142 ratio x V_g, on every shared wind-tunnel test.
+#include "drum/io/projectPaths.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
@@ -20,11 +21,6 @@ using namespace particleDrag;
 namespace
 {
 
-std::string dataDir()
-{
-    const char* env = std::getenv("DRYER_DATA");
-    return env ? env : DRYER_DATA_DIR;
-}
 
 struct SizeClass
 {
@@ -43,7 +39,7 @@ std::map<std::string, Material> readMaterials()
 {
     io::CSVReader<5, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in
     (
-        dataDir() + "/windtunnel_materials.csv"
+        (drum::dataDir()/"windtunnel_materials.csv").string()
     );
     in.read_header(io::ignore_extra_column, "material", "particle_density_kg_m3",
                    "psd_lower_um", "psd_upper_um", "psd_wt_pct");
@@ -95,7 +91,7 @@ TEST(ReferencePredictions, IsolatedAndSherrittCorrection)
 
     std::map<int, std::array<double, 4>> tests;  // Vg, spill, L, y
     {
-        io::CSVReader<6> in(dataDir() + "/windtunnel_tests.csv");
+        io::CSVReader<6> in((drum::dataDir()/"windtunnel_tests.csv").string());
         in.read_header(io::ignore_extra_column, "test", "air_velocity_m_s",
                        "spill_rate_kg_m_s", "flight_length_m", "fall_height_m", "material");
         int test;
@@ -107,7 +103,7 @@ TEST(ReferencePredictions, IsolatedAndSherrittCorrection)
         }
     }
 
-    io::CSVReader<5> in(dataDir() + "/windtunnel_reference_predictions.csv");
+    io::CSVReader<5> in((drum::dataDir()/"windtunnel_reference_predictions.csv").string());
     in.read_header(io::ignore_extra_column, "test", "material", "fall_height_m",
                    "pred_a_m", "pred_b_m");
     int test, rows = 0;

@@ -106,7 +106,7 @@ TEST(SherrittFlightShapes, OverloadBedChordBelowTheAxis)
 
 TEST(SherrittFlightShapes, HoldupFromDischargeEqualsPocketArea)
 {
-    // Sherritt's key idea (digest 2.3): integrating the discharge gives the
+    // Sherritt's key idea (§3.2): integrating the discharge gives the
     // flight holdup. Check it against the shoelace area of the pocket under
     // the horizontal through the tip, for Sheikh-like 90 and 135 deg flights.
     const double D = 0.385;

@@ -2,6 +2,7 @@
 // against the shared CSV (Table 3-3), the thesis base case (Table 5-4, Black's
 // Run 33: 3.88e-5 m2/s), the regime boundaries, and the scatter of the
 // correlation over the tabulated experiments it was fitted to.
+#include "drum/io/projectPaths.hpp"
 #include "drum/io/csv.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/transport/axialDispersion.hpp"
@@ -18,18 +19,13 @@ using namespace drum;
 namespace
 {
 
-std::filesystem::path dataDir()
-{
-    const char* env = std::getenv("DRYER_DATA");
-    return env ? env : DRYER_DATA_DIR;
-}
 
 } // namespace
 
 
 TEST(AxialDispersion, ConstantsAreTable33)
 {
-    io::CSVReader<6> in((dataDir()/"sherritt2001_correlation_constants.csv").string());
+    io::CSVReader<6> in((drum::dataDir()/"sherritt2001_correlation_constants.csv").string());
     in.read_header(io::ignore_extra_column, "bed_behaviour", "k", "a_speed_exp", "b_diameter_exp",
                    "c_particle_exp", "d_fill_exp");
     std::string name;
@@ -56,7 +52,7 @@ TEST(AxialDispersion, ConstantsAreTable33)
 TEST(AxialDispersion, BaseCaseOfChapter5AndRegimes)
 {
     // Table 5-2/5-4 base case: 19.2 % of critical speed, d_p 7 mm, X 0.24,
-    // D_z 3.88e-5 m2/s (Black's Run 33; digest: Eq 84 with 7 mm)
+    // D_z 3.88e-5 m2/s (Black's Run 33; Sherritt 2001 Eq 84 with 7 mm)
     AxialDispersionInput in;
     in.drumDiameter = 0.45;
     in.particleDiameter = 0.007;
@@ -81,7 +77,7 @@ TEST(AxialDispersion, ScatterOverTheFittedExperimentsIsAboutAFactorTwo)
     // Rows the regression used (X < 0.5), rolling/cascading regime: the
     // thesis quotes a scatter of about x2 for the correlation
     io::CSVReader<6, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(
-        (dataDir()/"sherritt2001_dispersion.csv").string());
+        (drum::dataDir()/"sherritt2001_dispersion.csv").string());
     in.read_header(io::ignore_extra_column, "drum_diameter_m", "particle_diameter_numeric_mm",
                    "Dz_m2_s", "fill_fraction_X", "n_over_nc", "regime_by_speed");
     double D, dp, Dz, X, ratio;

@@ -1,5 +1,5 @@
 // Sherritt 1991 two-phase model: analytic EAD results, mass balances,
-// closed forms of the digest, DRUM1 inversion, axial solve, bad input.
+// closed forms of Sherritt 1991 §3.6-3.7, DRUM1 inversion, axial solve, bad input.
 #include "drum/flights/sherrittFlightShapes.hpp"
 #include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
@@ -85,9 +85,9 @@ TEST(TwoPhaseModel, EadDesignLoadedHoldupAndDenseFlowByHand)
     EXPECT_NEAR(s.feedRate, s.airborneCapacity[0] + F2, 1e-9);      // Eq 55, one size
 }
 
-TEST(TwoPhaseModel, OpenDrumHoldupMatchesDigestClosedForms)
+TEST(TwoPhaseModel, OpenDrumHoldupMatchesClosedForms)
 {
-    // digest 2.8 open-drum forms, from the flight-surface integrals
+    // Sherritt 1991 §3.6 open-drum forms, from the flight-surface integrals
     const auto c = sheikhCase();
     const TwoPhaseModel m(c);
     const SherrittFlightSurface s(*c.exterior, c.material.repose);
@@ -116,7 +116,7 @@ TEST(TwoPhaseModel, OpenDrumHoldupMatchesDigestClosedForms)
 
 TEST(TwoPhaseModel, DesignLoadingIsAnInflectionOfTheDenseHoldup)
 {
-    // closed forms (digest 2.9): dH2/dtheta_i vanishes at pi from both sides
+    // closed forms (Sherritt 1991 §3.7): dH2/dtheta_i vanishes at pi from both sides
     const TwoPhaseModel m(sheikhCase());
     auto H2 = [&](double t) { const auto s = m.atDischargeAngle(t); return s.dischargingHoldup + s.nonDischargingHoldup; };
     const double h = 2*deg;
@@ -321,7 +321,7 @@ TEST(TwoPhaseModel, BuriedFlightsSurfaceIsTheBedChordAndDenseFlowRisesSteeply)
 {
     // Sheikh's flights without interference, so the bed surface through the
     // first discharging tip runs to the shell: l(theta_i) = R cos a +
-    // sqrt(Ro^2 - R^2 sin^2 a), a = theta_i - phi (surface at phi, digest 2.3)
+    // sqrt(Ro^2 - R^2 sin^2 a), a = theta_i - phi (surface at phi, §3.2)
     auto c = sheikhCase();
     c.exterior = tabulateSherrittFlight(twoSidedFlightShape(0.385, 0.04, 0.04, 90*deg), 12, 2.10, 1*deg, false);
     const TwoPhaseModel m(c);
@@ -393,7 +393,7 @@ TEST(TwoPhaseModel, OverloadHoldupIsBedPlusFlights)
 
 TEST(TwoPhaseModel, TinyFlightsBedHoldupIsTheCircularSegment)
 {
-    // Vanishing radial flights (a drum almost without flights, digest 5.3):
+    // Vanishing radial flights (a drum almost without flights, §3.7):
     // the surface through the tip at theta - phi runs to the shell, and
     // Sherritt's holdup of that flight, 1/2 int l^2 (Eq 97), is the circular
     // segment under it: d/dtheta of the segment area is -l^2/2 with the

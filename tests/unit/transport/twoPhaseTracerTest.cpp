@@ -77,7 +77,7 @@ TEST(TwoPhaseTracer, ClassHoldupOverFeedIsEq139AndConvergesWithSlices)
     const TwoPhaseResult r = m.solveAxial(F0);
     ASSERT_EQ(r.sizeResidenceTimes.size(), 6u);
     // the classes differ (otherwise the per-class check says little): in a
-    // cocurrent drum the fines leave sooner (digest 2.12)
+    // cocurrent drum the fines leave sooner (docs/errata.md S12)
     EXPECT_LT(r.sizeResidenceTimes[5], 0.95*r.sizeResidenceTimes[0]);
 
     double previous = 1e300;

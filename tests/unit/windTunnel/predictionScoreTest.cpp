@@ -1,5 +1,6 @@
 // Scores worked by hand, and the isolated-particle and Sherritt-correction
 // scores the data README reports for the 69 shared wind-tunnel rows
+#include "drum/io/projectPaths.hpp"
 #include "drum/windTunnel/predictionScore.hpp"
 #include "drum/windTunnel/windTunnelData.hpp"
 
@@ -28,8 +29,7 @@ TEST(PredictionScore, HandValues)
 
 TEST(PredictionScore, IsolatedAndSherrittOnSharedRows)
 {
-    const char* env = std::getenv("DRYER_DATA");
-    const std::filesystem::path dir = env ? env : DRYER_DATA_DIR;
+    const std::filesystem::path dir = drum::dataDir();
     const auto materials = readWindTunnelMaterials(dir/"windtunnel_materials.csv");
     const auto tests = readWindTunnelTests(dir/"windtunnel_tests.csv", materials);
     const auto measured = readMeasuredAdvance(dir/"windtunnel_tests.csv");
@@ -53,7 +53,7 @@ TEST(PredictionScore, IsolatedAndSherrittOnSharedRows)
         isolated[t.test] = a;
         sherritt[t.test] = b;
     }
-    // shared/data README: RMS ln(pred/meas) 0.88 for (a), 0.34 for (b), and
+    // data/README.md: RMS ln(pred/meas) 0.88 for (a), 0.34 for (b), and
     // (a) over-predicts by a median factor of about 2.4
     const PredictionScore sa = scorePredictions(isolated, measured);
     const PredictionScore sb = scorePredictions(sherritt, measured);

@@ -1,4 +1,5 @@
 // Reading Sherritt's wind-tunnel tables, and refusing malformed ones
+#include "drum/io/projectPaths.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/windTunnel/windTunnelData.hpp"
 
@@ -17,11 +18,6 @@ namespace fs = std::filesystem;
 namespace
 {
 
-fs::path dataDir()
-{
-    const char* env = std::getenv("DRYER_DATA");
-    return env ? env : DRYER_DATA_DIR;
-}
 
 // A scratch file with the given text, removed at scope exit
 struct TempCsv
@@ -55,7 +51,7 @@ std::string expectInputError(const std::function<void()>& f)
 
 TEST(WindTunnelData, ReadsSharedTables)
 {
-    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    const auto materials = readWindTunnelMaterials(drum::dataDir()/"windtunnel_materials.csv");
     ASSERT_EQ(materials.size(), 3u);
     const auto& sand = materials.at("sand");
     EXPECT_DOUBLE_EQ(sand.particleDensity, 2650.0);
@@ -67,19 +63,19 @@ TEST(WindTunnelData, ReadsSharedTables)
     for (const auto& c : sand.classes) sum += c.massFraction;
     EXPECT_NEAR(sum, 1.0, 1e-12);
 
-    const auto tests = readWindTunnelTests(dataDir()/"windtunnel_tests.csv", materials);
+    const auto tests = readWindTunnelTests(drum::dataDir()/"windtunnel_tests.csv", materials);
     EXPECT_EQ(tests.size(), 69u);
     for (const auto& t : tests)
     {
         EXPECT_TRUE(t.fallHeight == 10.3 || t.fallHeight == 6.6) << t.test;
     }
-    EXPECT_EQ(readMeasuredAdvance(dataDir()/"windtunnel_tests.csv").size(), 69u);
+    EXPECT_EQ(readMeasuredAdvance(drum::dataDir()/"windtunnel_tests.csv").size(), 69u);
 }
 
 TEST(WindTunnelData, TestReaderIgnoresTheMeasuredAdvance)
 {
     // A tests file without any measured column is complete input
-    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    const auto materials = readWindTunnelMaterials(drum::dataDir()/"windtunnel_materials.csv");
     TempCsv f("test,material,air_velocity_m_s,spill_rate_kg_m_s,flight_length_m,fall_height_m\n"
               "1,sand,4.0,24.0,1.0,10.3\n");
     const auto tests = readWindTunnelTests(f.path, materials);
@@ -89,7 +85,7 @@ TEST(WindTunnelData, TestReaderIgnoresTheMeasuredAdvance)
 
 TEST(WindTunnelData, MalformedFilesAreRefusedNamingTheProblem)
 {
-    const auto materials = readWindTunnelMaterials(dataDir()/"windtunnel_materials.csv");
+    const auto materials = readWindTunnelMaterials(drum::dataDir()/"windtunnel_materials.csv");
     const std::string header =
         "test,material,air_velocity_m_s,spill_rate_kg_m_s,flight_length_m,fall_height_m\n";
 

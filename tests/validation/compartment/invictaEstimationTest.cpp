@@ -2,6 +2,7 @@
 // curve (invicta_rtd.csv): fit (t_kiln, C_B, C_F^G) at N = 30 and compare
 // with Lee's Table 7.2 fit on the same objective. The moments of the fit
 // are printed; the model's SD is structurally far below the measured one.
+#include "drum/io/projectPaths.hpp"
 #include "drum/rtd/rtdEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
@@ -14,18 +15,13 @@ using namespace drum;
 
 namespace
 {
-std::string dataDir()
-{
-    const char* env = std::getenv("DRYER_DATA");
-    return env ? env : DRYER_DATA_DIR;
-}
 } // namespace
 
 TEST(InvictaEstimation, LeastSquaresFitAtLeastAsGoodAsTable72)
 {
     std::vector<double> t, E;
     {
-        io::CSVReader<2> in(dataDir() + "/invicta_rtd.csv");
+        io::CSVReader<2> in((drum::dataDir()/"invicta_rtd.csv").string());
         in.read_header(io::ignore_extra_column, "t_after_pulse_start_s", "E_per_h");
         double a, b;
         while (in.read_row(a, b))
@@ -77,7 +73,7 @@ TEST(InvictaEstimation, StagnantZoneExtensionWithLogObjectiveMatchesMoments)
     // on the measured sampling (both truncated at 74 min).
     std::vector<double> t, E;
     {
-        io::CSVReader<2> in(dataDir() + "/invicta_rtd.csv");
+        io::CSVReader<2> in((drum::dataDir()/"invicta_rtd.csv").string());
         in.read_header(io::ignore_extra_column, "t_after_pulse_start_s", "E_per_h");
         double a, b;
         while (in.read_row(a, b))

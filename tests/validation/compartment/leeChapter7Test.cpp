@@ -1,7 +1,8 @@
 // Lee (2008) Chapter 7 reproduced from his inputs: the Invicta dryer
 // (gPROMS process entity values), the App. 10.2.3 correlations and the
 // Table 7.2 fitted parameters. Targets are read from lee_model_results.csv
-// and invicta_rtd.csv (../shared/data), never typed in.
+// and invicta_rtd.csv (data/), never typed in.
+#include "drum/io/projectPaths.hpp"
 #include "drum/transport/compartmentLeeDryer.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
@@ -19,11 +20,6 @@ using namespace drum;
 namespace
 {
 
-std::string dataDir()
-{
-    const char* env = std::getenv("DRYER_DATA");
-    return env ? env : DRYER_DATA_DIR;
-}
 
 //- (table, row_value, quantity) -> value
 using Results = std::map<std::tuple<std::string, double, std::string>, double>;
@@ -33,7 +29,7 @@ const Results& leeResults()
     static const Results r = []
     {
         Results out;
-        io::CSVReader<7, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(dataDir() + "/lee_model_results.csv");
+        io::CSVReader<7, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in((drum::dataDir()/"lee_model_results.csv").string());
         in.read_header(io::ignore_extra_column, "table", "row_key", "row_value", "quantity", "value", "unit", "note");
         std::string table, key, rowValue, quantity, unit, note;
         double value;
@@ -72,7 +68,7 @@ struct Measured { std::vector<double> t, E; };
 
 Measured invictaRtd()
 {
-    io::CSVReader<2> in(dataDir() + "/invicta_rtd.csv");
+    io::CSVReader<2> in((drum::dataDir()/"invicta_rtd.csv").string());
     in.read_header(io::ignore_extra_column, "t_after_pulse_start_s", "E_per_h");
     Measured m;
     double t, e;

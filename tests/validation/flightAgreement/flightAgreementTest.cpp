@@ -50,12 +50,12 @@
 //    full Invicta flight at h = 0.05 deg, bound 6.54e-5). Table A has a node
 //    at the jump and no offset.
 //
-// Angle map (digest sherritt1991.md §0, leeFlight.hpp): Lee's psi is the root
+// Angle map (Sherritt 1991 nomenclature, leeFlight.hpp): Lee's psi is the root
 // from the drum bottom, the tip at psi + psi_ft; Sherritt's theta is the tip
 // from the horizontal on the descending side, so the tip crossing the
 // horizontal on the rising side is psi + psi_ft = 90 deg <=> theta = pi:
 // theta = psi + psi_ft + 90 deg. The surface at theta is the table at
-// theta - phi (digest §2.3). Sherritt's frame is Lee's mirrored in x
+// theta - phi (Sherritt 1991 §3.2). Sherritt's frame is Lee's mirrored in x
 // (x_S = -x_L, z_S = y_L): checked on the root, elbow and tip.
 #include "drum/flights/leeFlight.hpp"
 #include "drum/flights/sherrittFlightProfile.hpp"
@@ -96,7 +96,7 @@ std::vector<Case> cases()
     forward.baseAngleDeg = 80.0;
     FlightGeometry backward = invicta;  // base leaning 15 deg back
     backward.baseAngleDeg = 105.0;
-    // Sheikh's drum (Sherritt 1991 §5.1.1, digest §6.1): 0.385 m, 12
+    // Sheikh's drum (Sherritt 1991 §5.1.1): 0.385 m, 12
     // two-sided 135 deg flights, sand 1517 kg/m^3 at 35.69 deg, 5.7 rpm. The
     // flight sizes are not in the thesis text: 40 mm base, 30 mm tip assumed.
     const FlightGeometry sheikh{0.1925, 0.040, 0.030, 90.0, 135.0, 12};
@@ -265,7 +265,7 @@ TEST(FlightAgreement, HoldupDifferenceIsTheTableInterpolationError)
 
 TEST(FlightAgreement, SherrittGeneratorTableAgreesWithLee)
 {
-    // Sherritt's own generator for the same two-sided shape (digest §2.3:
+    // Sherritt's own generator for the same two-sided shape (§3.2:
     // horizontal line from the tip to the first wall or flight, with the
     // other N-1 flights in the way): independent of LeeFlight's geometry
     constexpr double stepDeg = 0.05;

@@ -1,14 +1,15 @@
-// Folder of the seed data CSVs: $DRYER_DATA, else the DRYER_DATA_DIR macro
+// Folder of the theses' tables for the flight validations: drum::dataDir()
+// ($DRYER_DATA, else data/ of the checkout)
 #ifndef DRYER_TESTS_FLIGHTS_DATADIR_HPP
 #define DRYER_TESTS_FLIGHTS_DATADIR_HPP
 
-#include <cstdlib>
+#include "drum/io/projectPaths.hpp"
+
 #include <filesystem>
 
 inline std::filesystem::path dryerDataDir()
 {
-    const char* env = std::getenv("DRYER_DATA");
-    return (env && *env) ? std::filesystem::path(env) : std::filesystem::path(DRYER_DATA_DIR);
+    return drum::dataDir();
 }
 
 #endif

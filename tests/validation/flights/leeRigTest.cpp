@@ -3,7 +3,7 @@
 // only the tip triangle is left (Eq 4.12), the tip-triangle mass, and the
 // total mass unloaded from the tip horizontal on, each with the spread that
 // phi +- 2 sigma (Lee's "95.4 %" band, App. 11.2) gives. Targets: the numbers
-// the digest derives in §4.1 for experiments 6, 9 and 11; the thesis prints
+// an independent hand calculation gives for experiments 6, 9 and 11; the thesis prints
 // the rig masses only in figures.
 #include "dataDir.hpp"
 
@@ -141,7 +141,7 @@ TEST(LeeRig, EndAnglesAndMassesForExperiments5to16)
         }
         EXPECT_NEAR(released/f.singleFlightArea(a), 1.0, 1e-7);
 
-        // Digest §4.1 [check]: psi4 / psi5 / tip-triangle mass (rho_b 1474)
+        // Independent hand calculation: psi4 / psi5 / tip-triangle mass (rho_b 1474)
         if (e.experiment == 11 && e.repeat == 0)
         {
             EXPECT_NEAR(mid.psi4, 175.9, 0.05);

@@ -2,7 +2,7 @@
 # The five Sherritt (1991) validation drums through drumSolver: every case
 # runs, writes its RTD and per-class table, the network agrees with the
 # model's own residence times (Eqs 138, 139), and the thesis' qualitative
-# statements hold (digest sherritt1991.md 6, 8 item 12):
+# statements hold (Sherritt 1991 §5.1):
 #   Sheikh 12x90 deg, no gas, underloaded: "only about 10%" of the holdup
 #     airborne (the band of sherrittDrumsTest.cpp, 2-15 %), about 3/4 of
 #     the axial flow airborne (60-95 %)

@@ -1,4 +1,4 @@
-// Qualitative checks of Sherritt 1991 Ch 5 (digest 6, 8 item 12). The
+// Qualitative checks of Sherritt 1991 Ch 5 (§5.1). The
 // thesis gives no plotted numbers; flight sizes are our assumptions
 // (cases/sherrittDrums/README.md). The flights are built as drumSolver
 // builds them from cases/sherrittDrums/*/drumDict (drum::buildSherrittFlight).
