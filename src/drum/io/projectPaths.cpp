@@ -41,12 +41,6 @@ std::filesystem::path defaultsDir()
 }
 
 
-std::filesystem::path templatesDir()
-{
-    return projectDir()/"etc"/"templates";
-}
-
-
 std::filesystem::path expandPath
 (
     const std::string& raw,

@@ -1,7 +1,8 @@
-// Where the project's own files are: the one lookup every tool, case and
-// test uses for the thesis tables (data/), the shipped defaults
-// (etc/defaults/) and the case templates (etc/templates/). Each folder is
-// found inside the checkout; an environment variable may point elsewhere.
+// Where the project's own files are: the one lookup the drum library, its
+// tools and tests use for the thesis tables (data/) and the shipped defaults
+// (etc/defaults/). Each folder is found inside the checkout; an environment
+// variable may point elsewhere. (The case templates, etc/templates/, are
+// copied by the Python tools curtainCase and buildDriftTable.)
 #ifndef DRUM_IO_PROJECTPATHS_HPP
 #define DRUM_IO_PROJECTPATHS_HPP
 
@@ -20,9 +21,6 @@ std::filesystem::path dataDir();
 
 //- projectDir()/etc/defaults: shipped drift tables and model constants
 std::filesystem::path defaultsDir();
-
-//- projectDir()/etc/templates: the case templates the tools copy
-std::filesystem::path templatesDir();
 
 //- A path from a dictionary: a leading $DRYER_DATA, $DRYER_PROJECT (also
 //  written ${...}) resolves as above even when the variable is unset, any

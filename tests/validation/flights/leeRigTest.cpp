@@ -5,11 +5,10 @@
 // phi +- 2 sigma (Lee's "95.4 %" band, App. 11.2) gives. Targets: the numbers
 // an independent hand calculation gives for experiments 6, 9 and 11; the thesis prints
 // the rig masses only in figures.
-#include "dataDir.hpp"
-
 #include "drum/flights/angleOfRepose.hpp"
 #include "drum/flights/leeFlight.hpp"
 #include "drum/io/csv.hpp"
+#include "drum/io/projectPaths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,7 +28,7 @@ struct RigFlight
 std::map<std::string, RigFlight> readFlights()
 {
     io::CSVReader<9, io::trim_chars<' '>, io::double_quote_escape<',', '"'>>
-        in((dryerDataDir()/"lee_flights.csv").string());
+        in((drum::dataDir()/"lee_flights.csv").string());
     in.read_header(io::ignore_no_column, "flight", "flight_as_printed", "s1_base_length_mm",
         "s2_tip_length_mm", "alpha1_base_angle_deg", "alpha2_tip_angle_deg",
         "section_length_m", "back_plate_radius_of_curvature_m", "radius_of_curvature_as_printed");
@@ -46,7 +45,7 @@ std::map<std::string, RigFlight> readFlights()
 std::map<std::string, double> readConsolidatedDensity()
 {
     io::CSVReader<17, io::trim_chars<' '>, io::double_quote_escape<',', '"'>>
-        in((dryerDataDir()/"lee_materials.csv").string());
+        in((drum::dataDir()/"lee_materials.csv").string());
     in.read_header(io::ignore_extra_column, "material", "material_as_printed",
         "particle_density_kg_m3", "particle_density_err_kg_m3",
         "bulk_density_unconsolidated_kg_m3", "bulk_density_unconsolidated_err_as_printed",
@@ -95,7 +94,7 @@ TEST(LeeRig, EndAnglesAndMassesForExperiments5to16)
 {
     const auto flights = readFlights();
     const auto rho = readConsolidatedDensity();
-    const auto runs = drum::readLeeRigExperiments(dryerDataDir()/"lee_unloading_experiments.csv");
+    const auto runs = drum::readLeeRigExperiments(drum::dataDir()/"lee_unloading_experiments.csv");
     ASSERT_EQ(flights.size(), 3u);
     ASSERT_EQ(runs.size(), 18u);
 

@@ -1,9 +1,8 @@
 // Lee 2008 Table 4.2: transition points of the Invicta flight (Table 4.1) at
 // phi = 30 and 60 deg, every row of lee_transition_points.csv to 0.1 deg.
-#include "dataDir.hpp"
-
 #include "drum/flights/leeFlight.hpp"
 #include "drum/io/csv.hpp"
+#include "drum/io/projectPaths.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +11,7 @@
 
 TEST(LeeTable42, TransitionPointsReproduced)
 {
-    io::CSVReader<15> in((dryerDataDir()/"lee_transition_points.csv").string());
+    io::CSVReader<15> in((drum::dataDir()/"lee_transition_points.csv").string());
     in.read_header(io::ignore_no_column, "D_m", "R_m", "s1_m", "s2_m", "alpha1_deg",
         "alpha2_deg", "N_flights", "phi_deg", "transition_point", "psi_reported_deg",
         "psi_recomputed_deg", "equation", "R_F_m", "psi_ft_deg", "psi_fl_deg");
