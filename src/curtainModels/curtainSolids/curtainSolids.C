@@ -40,12 +40,16 @@ Foam::autoPtr<Foam::dictionary> readConstantDict
 }
 
 
+constexpr Foam::scalar Foam::curtainSolids::alphaEdgeDefault;
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::curtainSolids::curtainSolids(const fvMesh& mesh)
 :
     rhoGas_(0),
-    muGas_(0)
+    muGas_(0),
+    alphaEdge_(alphaEdgeDefault)
 {
     const autoPtr<dictionary> curtain(readConstantDict(mesh, "curtainProperties"));
     const autoPtr<dictionary> transport(readConstantDict(mesh, "transportProperties"));
@@ -53,6 +57,14 @@ Foam::curtainSolids::curtainSolids(const fvMesh& mesh)
     gasName_ = curtain->getOrDefault<word>("continuousPhase", "air");
     rhoGas_ = transport->get<scalar>("rho");
     muGas_ = rhoGas_*transport->get<scalar>("nu");
+
+    alphaEdge_ = curtain->getOrDefault<scalar>("alphaEdge", alphaEdgeDefault);
+    if (!(alphaEdge_ > 0 && alphaEdge_ < 1))
+    {
+        FatalIOErrorInFunction(*curtain)
+            << "constant/curtainProperties: entry 'alphaEdge' = " << alphaEdge_
+            << " outside the allowed range (0 1)" << exit(FatalIOError);
+    }
 
     const dictionary& particles = curtain->subDict("particles");
     const dictionary emptyDict;

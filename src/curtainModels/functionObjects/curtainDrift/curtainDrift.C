@@ -358,6 +358,15 @@ bool Foam::functionObjects::curtainDrift::write()
     Info<< "    bulk: drift " << bulkDrift << " m, captured " << bulkCaptured
         << nl << endl;
 
+    // published for runTimeControl conditions (steadyWindow)
+    forAll(solids_->names(), i)
+    {
+        setResult("drift_" + solids_->names()[i], drift[i]);
+        setResult("captured_" + solids_->names()[i], captured[i]);
+    }
+    setResult("drift_bulk", bulkDrift);
+    setResult("captured_bulk", bulkCaptured);
+
     if (Pstream::master())
     {
         OFstream& os = file();

@@ -34,7 +34,7 @@ Foam::functionObjects::curtainEdges::curtainEdges
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
     flowDir_(1, 0, 0),
-    alphaEdge_(5.6e-4)
+    alphaEdge_(curtainSolids::alphaEdgeDefault)
 {
     read(dict);
     OFstream& os = file();
@@ -65,7 +65,7 @@ bool Foam::functionObjects::curtainEdges::read(const dictionary& dict)
             << "Entry 'flowDirection' is a zero vector" << exit(FatalIOError);
     }
     flowDir_ /= mag(flowDir_);
-    alphaEdge_ = dict.getOrDefault<scalar>("alphaEdge", 5.6e-4);
+    alphaEdge_ = dict.getOrDefault<scalar>("alphaEdge", solids_->alphaEdge());
     if (!(alphaEdge_ > 0 && alphaEdge_ < 1))
     {
         FatalIOErrorInFunction(dict)

@@ -33,7 +33,7 @@ Foam::functionObjects::curtainGasVelocity::curtainGasVelocity
     fvMeshFunctionObject(name, runTime, dict),
     writeFile(mesh_, name, typeName, dict),
     flowDir_(1, 0, 0),
-    alphaEdge_(5.6e-4),
+    alphaEdge_(curtainSolids::alphaEdgeDefault),
     Vg_(-1),
     hMin_(-GREAT),
     hMax_(GREAT)
@@ -68,7 +68,7 @@ bool Foam::functionObjects::curtainGasVelocity::read(const dictionary& dict)
     }
     flowDir_ /= mag(flowDir_);
 
-    alphaEdge_ = dict.getOrDefault<scalar>("alphaEdge", 5.6e-4);
+    alphaEdge_ = dict.getOrDefault<scalar>("alphaEdge", solids_->alphaEdge());
     if (!(alphaEdge_ > 0 && alphaEdge_ < 1))
     {
         FatalIOErrorInFunction(dict)
@@ -171,6 +171,11 @@ bool Foam::functionObjects::curtainGasVelocity::write()
     Info<< type() << ' ' << name() << " write:" << nl
         << "    V_c " << Vc << " m/s, V_g " << Vg << " m/s, V_c/V_g "
         << ratio << " (solids volume " << sw << " m3)" << nl << endl;
+
+    setResult("Vc", Vc);
+    setResult("Vg", Vg);
+    setResult("VcByVg", ratio);
+    setResult("solidsVolume", sw);
 
     if (Pstream::master())
     {
