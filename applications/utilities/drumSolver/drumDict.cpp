@@ -3,6 +3,7 @@
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/io/projectPaths.hpp"
+#include "drum/io/yamlInput.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -50,19 +51,41 @@ struct Reader
         double v;
         try
         {
-            v = n.as<double>();
+            v = drum::yamlNumber(n, entry, file);
         }
-        catch (const YAML::Exception&)
+        catch (const InputError& e)
         {
-            throw InputError(file, entry, "not a number; allowed range " + range(lo, hi, openLo));
+            throw InputError(e.file(), entry, "not a number; allowed range " + range(lo, hi, openLo));
         }
         if (!std::isfinite(v) || v < lo || v > hi || (openLo && v == lo))
         {
             std::ostringstream os;
             os << "value " << v << " outside the allowed range " << range(lo, hi, openLo);
-            throw InputError(file, entry, os.str());
+            throw InputError(drum::fileLine(file, n), entry, os.str());
         }
         return v;
+    }
+
+    //- A whole-number entry: fractions are refused, not truncated
+    int integer(const YAML::Node& sec, const std::string& secName, const std::string& key,
+                int lo, int hi, std::optional<int> dflt = {}) const
+    {
+        const std::string entry = secName + "." + key;
+        const YAML::Node n = sec[key];
+        if (!n && dflt) return *dflt;
+        const double v = number(sec, secName, key, lo, hi);
+        if (v != std::floor(v))
+        {
+            throw InputError(drum::fileLine(file, n), entry, "'" + n.Scalar()
+                + "' is not a whole number; allowed range " + range(lo, hi, false) + " (integers)");
+        }
+        return int(v);
+    }
+
+    //- Only these keys in a section
+    void only(const YAML::Node& sec, const std::string& secName, const std::vector<std::string>& keys) const
+    {
+        if (sec) drum::onlyKeys(sec, secName, keys, file);
     }
 
     std::string word(const YAML::Node& sec, const std::string& secName, const std::string& key,
@@ -77,12 +100,16 @@ struct Reader
             if (dflt) return *dflt;
             throw InputError(file, entry, "missing; allowed: " + list);
         }
+        if (!n.IsScalar())
+        {
+            throw InputError(drum::fileLine(file, n), entry, "must be one word; allowed: " + list);
+        }
         const std::string v = n.as<std::string>();
         for (const auto& a : allowed)
         {
             if (v == a) return v;
         }
-        throw InputError(file, entry, "unknown value '" + v + "'; allowed: " + list);
+        throw InputError(drum::fileLine(file, n), entry, "unknown value '" + v + "'; allowed: " + list);
     }
 
     static std::string range(double lo, double hi, bool openLo)
@@ -108,7 +135,7 @@ drum::SherrittFlightSpec readSherrittFlight
     drum::SherrittFlightSpec s;
     s.type = drum::parseSherrittFlightType(
         r.word(n, sec, "type", {"twoSided", "EAD", "CBD", "table"}), sec + ".type", r.file);
-    s.count = int(r.number(n, sec, "count", interior ? 1 : 2, 200));
+    s.count = r.integer(n, sec, "count", interior ? 1 : 2, 200);
     // keys each type reads (anything else is a typo)
     std::vector<std::string> keys = {"type", "count"};
     switch (s.type)
@@ -149,8 +176,9 @@ drum::SherrittFlightSpec readSherrittFlight
             }
             for (std::size_t i = 0; i < a.size(); ++i)
             {
-                s.angles.push_back(a[i].as<double>()*deg);
-                s.lengths.push_back(l[i].as<double>());
+                const std::string at = "[" + std::to_string(i) + "]";
+                s.angles.push_back(drum::yamlNumber(a[i], sec + ".angles_deg" + at, r.file)*deg);
+                s.lengths.push_back(drum::yamlNumber(l[i], sec + ".lengths" + at, r.file));
             }
             keys.insert(keys.end(), {"tipDiameter", "angles_deg", "lengths"});
             break;
@@ -163,7 +191,10 @@ drum::SherrittFlightSpec readSherrittFlight
         {
             std::string list;
             for (const auto& a : keys) list += (list.empty() ? "" : ", ") + a;
-            throw InputError(r.file, sec + "." + k, "unknown entry for type " + drum::toString(s.type) + "; allowed: " + list);
+            const std::string near = drum::nearestKey(k, keys);
+            throw InputError(drum::fileLine(r.file, kv.first), sec + "." + k, "unknown entry for type "
+                + drum::toString(s.type) + (near.empty() ? "" : " (did you mean '" + sec + "." + near + "'?)")
+                + "; allowed: " + list);
         }
     }
     return s;
@@ -181,18 +212,13 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     {
         throw InputError(r.file, "", "case dictionary not found");
     }
-    YAML::Node root;
-    try
-    {
-        root = YAML::LoadFile(d.path.string());
-    }
-    catch (const YAML::Exception& e)
-    {
-        throw InputError(r.file, "", std::string("YAML syntax: ") + e.what());
-    }
+    const YAML::Node root = drum::loadYamlFile(d.path.string());
     const double big = 1e300;
+    // every key of every section is one the solver reads: a misspelt one is refused
+    r.only(root, "", {"drum", "flights", "material", "gas", "model", "drift", "rtd", "estimation"});
 
     const YAML::Node drum = r.section(root, "drum");
+    r.only(drum, "drum", {"length", "diameter", "slope_deg", "speed_rpm", "centrefillDiameter"});
     d.length = r.number(drum, "drum", "length", 0, 500, {}, true);
     d.diameter = r.number(drum, "drum", "diameter", 0, 20, {}, true);
     d.slopeDeg = r.number(drum, "drum", "slope_deg", 0, 20);
@@ -203,6 +229,8 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     // flights: Lee's two-section flight (flat entries) or Sherritt's
     // description (exterior/interior subsections, read after the material)
     const YAML::Node fl = r.section(root, "flights");
+    r.only(fl, "flights", {"axialLength", "tableStep_deg", "count", "baseLength", "tipLength",
+                           "baseAngle_deg", "tipAngle_deg", "exterior", "interior"});
     const bool sherrittFlights = bool(fl["exterior"]);
     d.flightAxialLength = r.number(fl, "flights", "axialLength", 0, d.length, d.length, true);
     d.flightTableStepDeg = r.number(fl, "flights", "tableStep_deg", 0.1, 5, 1.0);
@@ -212,7 +240,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
         {
             throw InputError(r.file, "flights.interior", "needs flights.exterior (Sherritt's flight description)");
         }
-        d.flightCount = int(r.number(fl, "flights", "count", 2, 200));
+        d.flightCount = r.integer(fl, "flights", "count", 2, 200);
         d.baseLength = r.number(fl, "flights", "baseLength", 0, d.diameter/2, {}, true);
         d.tipLength = r.number(fl, "flights", "tipLength", 0, d.diameter/2, 0.0);
         d.baseAngleDeg = r.number(fl, "flights", "baseAngle_deg", 30, 150, 90.0);
@@ -233,6 +261,8 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     }
 
     const YAML::Node m = r.section(root, "material");
+    r.only(m, "material", {"feedRate", "bulkDensity", "particleDensity", "sphericity", "repose_deg",
+                           "moisture", "sizes_um", "fractions_pct"});
     d.feedRate = r.number(m, "material", "feedRate", 0, 1e4, {}, true);
     d.bulkDensity = r.number(m, "material", "bulkDensity", 0, 2e4, {}, true);
     d.particleDensity = r.number(m, "material", "particleDensity", d.bulkDensity, 2e4);
@@ -244,6 +274,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     if (m["moisture"])
     {
         const YAML::Node w = m["moisture"];
+        r.only(w, "material.moisture", {"inlet", "outlet"});
         d.moisture = std::make_pair(r.number(w, "material.moisture", "inlet", 0, 1, {}, true),
                                     r.number(w, "material.moisture", "outlet", 0, 1, {}, true));
     }
@@ -263,7 +294,9 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     double sum = 0;
     for (std::size_t i = 0; i < sz.size(); ++i)
     {
-        const double s = sz[i].as<double>(), f = fr[i].as<double>();
+        const std::string at = "[" + std::to_string(i) + "]";
+        const double s = drum::yamlNumber(sz[i], "material.sizes_um" + at, r.file);
+        const double f = drum::yamlNumber(fr[i], "material.fractions_pct" + at, r.file);
         if (!(s > 0 && s <= 1e5)) throw InputError(r.file, "material.sizes_um[" + std::to_string(i) + "]", "outside (0, 1e5] um");
         if (!(f >= 0)) throw InputError(r.file, "material.fractions_pct[" + std::to_string(i) + "]", "must be >= 0");
         d.sizes.push_back(s*1e-6);
@@ -295,14 +328,19 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
 
     const YAML::Node gas = r.section(root, "gas", false);
     const YAML::Node g = gas ? gas : YAML::Node(YAML::NodeType::Map);
+    r.only(g, "gas", {"flow", "massRate", "temperature_C"});
     d.counterCurrent = r.word(g, "gas", "flow", {"coCurrent", "counterCurrent"}, std::string("counterCurrent")) == "counterCurrent";
     d.gasMassRate = r.number(g, "gas", "massRate", 0, 1e4, 0.0);
     d.gasTemperatureC = r.number(g, "gas", "temperature_C", -50, 1500, 20.0);
 
     const YAML::Node mo = r.section(root, "model");
+    r.only(mo, "model", {"type", "slices", "imposedDenseFlow", "dischargeEndAngle_deg", "axialSteps",
+                         "denseDispersion", "dispersionBed", "subtractNumericalDispersion", "partition",
+                         "kilnTime", "backFraction", "forwardDragFactor", "designLoadMultiplier",
+                         "stagnantRatio", "exchangeTime", "drift"});
     d.model = r.word(mo, "model", "type", {"compartment", "twoPhase"});
     d.slicesGiven = bool(mo["slices"]);
-    d.slices = int(r.number(mo, "model", "slices", 1, 1000, 30.0));
+    d.slices = r.integer(mo, "model", "slices", 1, 1000, 30);
     if (d.model == "compartment" && sherrittFlights)
     {
         throw InputError(r.file, "flights.exterior", "model compartment needs the two-section flight entries "
@@ -316,11 +354,16 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     {
         d.dischargeEndAngleDeg = r.number(mo, "model", "dischargeEndAngle_deg", 40, 360);
     }
-    d.axialSteps = int(r.number(mo, "model", "axialSteps", 10, 100000, 200.0));
+    d.axialSteps = r.integer(mo, "model", "axialSteps", 10, 100000, 200);
     d.denseDispersionValue = 0;
     d.denseDispersion = "none";
     if (const YAML::Node dd = mo["denseDispersion"])
     {
+        if (!dd.IsScalar())
+        {
+            throw InputError(drum::fileLine(r.file, dd), "model.denseDispersion",
+                             "none, sherritt2001 or a value in [0, 1] m2/s");
+        }
         const std::string v = dd.as<std::string>();
         if (v == "none" || v == "sherritt2001")
         {
@@ -371,6 +414,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
 
     const YAML::Node rt = r.section(root, "rtd", false);
     const YAML::Node rr = rt ? rt : YAML::Node(YAML::NodeType::Map);
+    r.only(rr, "rtd", {"integrator", "timeStep", "recovery", "pulseDuration", "onUnstable", "tracer"});
     d.rtd.integrator = drum::parseRtdIntegrator(
         r.word(rr, "rtd", "integrator", {"exact", "trbdf2", "backwardEuler", "forwardEuler"}, std::string("exact")),
         "rtd.integrator", r.file);
@@ -382,6 +426,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     if (rr["tracer"])
     {
         const YAML::Node t = rr["tracer"];
+        r.only(t, "rtd.tracer", {"file", "timeColumn", "timeUnit", "EColumn", "EUnit"});
         if (!t["file"])
         {
             throw InputError(r.file, "rtd.tracer.file", "missing: path of the measured tracer CSV");
@@ -407,6 +452,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
     if (root["estimation"])
     {
         const YAML::Node e = root["estimation"];
+        r.only(e, "estimation", {"parameters", "starts", "objective", "logOffset"});
         if (!d.tracer)
         {
             throw InputError(r.file, "estimation", "needs a measured curve: rtd.tracer");
@@ -439,7 +485,7 @@ DrumDict readDrumDict(const std::filesystem::path& caseDir)
             }
             d.estimate.push_back(n);
         }
-        d.starts = int(r.number(e, "estimation", "starts", 1, 100, 4.0));
+        d.starts = r.integer(e, "estimation", "starts", 1, 100, 4);
         d.logObjective = r.word(e, "estimation", "objective", {"linear", "log"}, std::string("linear")) == "log";
         d.logOffset = r.number(e, "estimation", "logOffset", 0, 100, 0.01, true);
     }

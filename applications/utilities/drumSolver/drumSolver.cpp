@@ -20,6 +20,7 @@
 #include "drum/io/csv.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/gnuplot.hpp"
+#include "drum/io/resultsFolder.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
@@ -752,12 +753,25 @@ int main(int argc, char* argv[])
         caseDir = ".";
     }
     DrumDict d;
+    // errors name the results folder, not the hidden one a run writes into
+    std::string partial, target;
+    const auto named = [&](std::string msg)
+    {
+        for (std::size_t at; !partial.empty() && (at = msg.find(partial)) != std::string::npos;)
+        {
+            msg.replace(at, partial.size(), target);
+        }
+        return msg;
+    };
     try
     {
         say("reading " + (caseDir/"drumDict").string());
         d = readDrumDict(caseDir);
-        const fs::path out = caseDir/"results";
-        fs::create_directories(out);
+        // outputs go to a fresh folder that replaces results/ only when complete
+        drum::ResultsFolder results(caseDir/"results");
+        const fs::path& out = results.path();
+        partial = out.string();
+        target = results.target().string();
         if (d.model == "compartment")
         {
             runCompartment(d, out);
@@ -766,19 +780,24 @@ int main(int argc, char* argv[])
         {
             runTwoPhase(d, out);
         }
-        say("results in " + out.string());
+        const auto kept = results.commit();
+        for (const auto& f : kept)
+        {
+            say("kept your file " + (results.target()/f).string());
+        }
+        say("results in " + results.target().string());
     }
     catch (const drum::InputError& e)
     {
         // Model-level errors carry no file: this dictionary is where to fix them
         std::cerr << "drumSolver: input error: "
                   << (e.file().empty() ? (caseDir/"drumDict").string() + ": " : std::string())
-                  << e.what() << std::endl;
+                  << named(e.what()) << std::endl;
         return 1;
     }
     catch (const std::exception& e)
     {
-        std::cerr << "drumSolver: error: " << e.what() << std::endl;
+        std::cerr << "drumSolver: error: " << named(e.what()) << " (results/ left as it was)" << std::endl;
         return 1;
     }
     return 0;

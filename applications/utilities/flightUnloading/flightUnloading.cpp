@@ -8,8 +8,10 @@
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/gnuplot.hpp"
+#include "drum/io/resultsFolder.hpp"
 #include "drum/io/inputError.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -223,21 +225,37 @@ int main(int argc, char** argv)
             pSection = crossSectionPlot(c, model);
         }
 
-        fs::create_directories(out);
+        // a fresh folder that replaces the output folder only when complete
+        const fs::path here = fs::current_path();
+        const fs::path whole = fs::weakly_canonical(fs::absolute(out));
+        if (whole == here || std::mismatch(whole.begin(), whole.end(), here.begin(), here.end()).first
+                                 == whole.end())
+        {
+            throw drum::InputError("", "-out", "'" + out.string() + "' is the current folder or holds it; "
+                                   "give a folder of its own for the results");
+        }
+        drum::ResultsFolder results(whole);
+        const fs::path finalOut = out;
+        out = results.path();
         profile.write(out/"unloadingProfile.csv");
-        std::cout << "Wrote " << (out/"unloadingProfile.csv").string() << " (" << prof.size()
+        std::cout << "Wrote " << (finalOut/"unloadingProfile.csv").string() << " (" << prof.size()
                   << " angles)\n";
         transitions.write(out/"transitionPoints.csv");
-        std::cout << "Wrote " << (out/"transitionPoints.csv").string() << '\n';
+        std::cout << "Wrote " << (finalOut/"transitionPoints.csv").string() << '\n';
         summary.write(out/"flightSummary.csv");
-        std::cout << "Wrote " << (out/"flightSummary.csv").string() << '\n';
+        std::cout << "Wrote " << (finalOut/"flightSummary.csv").string() << '\n';
         if (c.plots)
         {
             drum::writePng(pProfile, out/"unloadingProfile.png");
-            std::cout << "Wrote " << (out/"unloadingProfile.png").string() << '\n';
+            std::cout << "Wrote " << (finalOut/"unloadingProfile.png").string() << '\n';
             drum::writePng(pSection, out/"crossSection.png");
-            std::cout << "Wrote " << (out/"crossSection.png").string() << '\n';
+            std::cout << "Wrote " << (finalOut/"crossSection.png").string() << '\n';
         }
+        for (const auto& f : results.commit())
+        {
+            std::cout << "Kept your file " << (finalOut/f).string() << '\n';
+        }
+        out = finalOut;
         std::cout << "  max holdup " << model.maxHoldup() << " kg/m, at tip horizontal "
                   << model.designFlightHoldup() << " kg/m, mean release angle "
                   << model.meanReleaseAngleDeg() << " deg, design load (Eq 4.21) "

@@ -2,6 +2,7 @@
 
 #include "drum/io/atomicFile.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/yamlInput.hpp"
 #include "drum/io/projectPaths.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 
@@ -31,15 +32,7 @@ PorousSheetConstants readPorousSheetConstants(const std::filesystem::path& file)
         throw InputError(f, "", "porousSheet constants not found: fit them to a drift table with "
             "'curtainDrift -fit porousSheet -table TABLE.csv -out " + f + "'");
     }
-    YAML::Node n;
-    try
-    {
-        n = YAML::LoadFile(f);
-    }
-    catch (const YAML::Exception& e)
-    {
-        throw InputError(f, "", std::string("malformed YAML: ") + e.what());
-    }
+    const YAML::Node n = loadYamlFile(f);
     if (!n.IsMap() || !n["model"] || n["model"].as<std::string>() != "porousSheet")
     {
         throw InputError(f, "model", "not a porousSheet constants file (needs 'model: porousSheet')");

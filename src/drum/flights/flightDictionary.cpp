@@ -2,6 +2,7 @@
 
 #include "drum/flights/angleOfRepose.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/yamlInput.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -18,20 +19,8 @@ namespace
 void onlyKnown(const YAML::Node& node, const std::string& where,
                const std::set<std::string>& known, const std::string& file)
 {
-    if (!node.IsMap())
-    {
-        throw InputError(file, where, "must be a mapping of entries");
-    }
-    for (const auto& kv : node)
-    {
-        const std::string key = kv.first.as<std::string>();
-        if (!known.count(key))
-        {
-            std::string list;
-            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-            throw InputError(file, where + "." + key, "unknown entry; allowed: " + list);
-        }
-    }
+    onlyKeys(node, where == "(top level)" ? "" : where,
+             std::vector<std::string>(known.begin(), known.end()), file);
 }
 
 double number(const YAML::Node& parent, const std::string& where, const std::string& key,
@@ -42,14 +31,7 @@ double number(const YAML::Node& parent, const std::string& where, const std::str
     {
         throw InputError(file, where + "." + key, "missing entry");
     }
-    try
-    {
-        return n.as<double>();
-    }
-    catch (const YAML::Exception&)
-    {
-        throw InputError(file, where + "." + key, "not a number: '" + n.Scalar() + "'");
-    }
+    return yamlNumber(n, where + "." + key, file);
 }
 
 double numberOr(const YAML::Node& parent, const std::string& where, const std::string& key,
@@ -63,15 +45,7 @@ double numberOr(const YAML::Node& parent, const std::string& where, const std::s
 
 FlightCase parseFlightDictionary(const std::string& text, const std::string& file)
 {
-    YAML::Node root;
-    try
-    {
-        root = YAML::Load(text);
-    }
-    catch (const YAML::Exception& e)
-    {
-        throw InputError(file, "", std::string("not valid YAML: ") + e.what());
-    }
+    const YAML::Node root = loadYamlText(text, file);
     onlyKnown(root, "(top level)", {"drum", "flight", "material", "output"}, file);
     for (const char* section : {"drum", "flight", "material"})
     {

@@ -38,12 +38,16 @@ AtomicFile::~AtomicFile()
 
 void AtomicFile::commit()
 {
+    // a full disk shows as a failed write, flush or close, or a short file
     out_.flush();
-    if (!out_)
-    {
-        throw std::runtime_error("writing " + temp_.string() + " failed");
-    }
+    const std::streamoff size = out_ ? std::streamoff(out_.tellp()) : -1;
     out_.close();
+    std::error_code ec;
+    if (!out_ || size < 0 || std::streamoff(std::filesystem::file_size(temp_, ec)) != size || ec)
+    {
+        throw std::runtime_error("cannot write " + target_.string() + " (writing its temporary "
+                                 + temp_.string() + " failed: disk full or not writable?)");
+    }
     std::filesystem::rename(temp_, target_);
     committed_ = true;
 }

@@ -1,6 +1,8 @@
 #include "drum/io/gnuplot.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +24,19 @@ std::string quoted(const std::string& s)
     return out + "\"";
 }
 } // namespace
+
+bool pngComplete(const std::filesystem::path& file)
+{
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char end[8] = {'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return false;
+    unsigned char head[8] = {}, tail[8] = {};
+    in.read(reinterpret_cast<char*>(head), 8);
+    in.seekg(-8, std::ios::end);
+    in.read(reinterpret_cast<char*>(tail), 8);
+    return in && std::equal(head, head + 8, signature) && std::equal(tail, tail + 8, end);
+}
 
 bool gnuplotAvailable()
 {
@@ -73,10 +88,13 @@ void writePng(const Plot& plot, const std::filesystem::path& path)
     const std::string script = gp.str();
     std::fwrite(script.data(), 1, script.size(), pipe);
     const int status = ::pclose(pipe);
-    if (status != 0 || !std::filesystem::exists(temp))
+    // gnuplot exits 0 even when its PNG could not be written whole
+    if (status != 0 || !pngComplete(temp))
     {
-        std::filesystem::remove(temp);
-        throw std::runtime_error("gnuplot failed writing " + path.string());
+        std::error_code ec;
+        std::filesystem::remove(temp, ec);
+        throw std::runtime_error("cannot write " + path.string() + " (gnuplot's PNG is missing or "
+                                 "incomplete: disk full or not writable?)");
     }
     std::filesystem::rename(temp, path);
 }

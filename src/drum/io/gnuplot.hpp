@@ -36,8 +36,11 @@ struct Plot
 //- True when a gnuplot executable is on PATH
 bool gnuplotAvailable();
 
+//- A PNG file that starts with its signature and ends with its IEND chunk
+bool pngComplete(const std::filesystem::path& file);
+
 //- Render the plot to a PNG at path. Throws std::runtime_error if gnuplot
-//  fails; the PNG is written atomically.
+//  fails or its PNG is incomplete; the PNG is written atomically.
 void writePng(const Plot& plot, const std::filesystem::path& path);
 
 } // namespace drum
