@@ -54,6 +54,15 @@ bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: -1/' "model.denseDispersio
 bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001\n  dispersionBed: bottom/' "model.dispersionBed.*allowed: kiln, passive"
 bad 's/^  forwardDragFactor: .*/&\n  dispersionBed: passive/' "model.dispersionBed.*needs model.denseDispersion"
 bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001\nestimation: {parameters: [kilnTime]}/' "model.denseDispersion.*not with estimation"
+# a strict dictionary: misspelt and duplicated keys, fractions for whole numbers,
+# a list item that is not a number (each names the line and the entry)
+bad 's/^  kilnTime:/  kilnTim:/' "drumDict:[0-9]*: entry 'model.kilnTim': unknown entry (did you mean 'model.kilnTime'?)"
+bad 's/^rtd:/rtdd:/' "entry 'rtdd': unknown entry (did you mean 'rtd'?)"
+bad 's/^  slices: 33/  slices: 33\n  slices: 20/' "entry 'model.slices': given twice (first on line"
+bad 's/^  count: .*/  count: 28.7/' "entry 'flights.count': '28.7' is not a whole number"
+bad 's/^  slices: 33/  slices: 33.5/' "entry 'model.slices': '33.5' is not a whole number"
+bad 's/^  feedRate: .*/  feedRate: abc/' "entry 'material.feedRate': not a number"
+bad 's/sizes_um: \[850\]/sizes_um: [abc]/' "entry 'material.sizes_um.0.': 'abc' is not a number"
 mkdir -p "$work/dispersion"
 sed 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001/' "$work/drumDict" > "$work/dispersion/drumDict"
 "$solver" -case "$work/dispersion" > "$work/dispersion/log" 2>&1 || { cat "$work/dispersion/log"; fail "sherritt2001 dispersion case did not run"; }
