@@ -61,4 +61,22 @@ TEST(FlightDictionary, RefusesBadEntries)
     EXPECT_EQ(refused(replaced(good, "radius: 2.5, ", "")), "drum.radius");
     EXPECT_EQ(refused(replaced(good, "tipAngle: 117", "tipAngle: abc")), "flight.tipAngle");
     EXPECT_EQ(refused(replaced(good, "depth: 0.02", "depth: 0.5")), "flight.serration.depth");
+    // a key given twice is refused (yaml-cpp alone would keep the first)
+    EXPECT_EQ(refused(replaced(good, "speed: 3", "speed: 3, speed: 4")), "drum.speed");
+}
+
+
+TEST(FlightDictionary, ErrorsNameTheLineAndTheNearestKey)
+{
+    try
+    {
+        drum::parseFlightDictionary(replaced(good, "speed: 3", "sped: 3"), "case.yaml");
+        FAIL() << "accepted a misspelt key";
+    }
+    catch (const drum::InputError& e)
+    {
+        EXPECT_EQ(e.file(), "case.yaml:2");
+        EXPECT_EQ(e.entry(), "drum.sped");
+        EXPECT_NE(std::string(e.what()).find("did you mean 'drum.speed'?"), std::string::npos) << e.what();
+    }
 }
