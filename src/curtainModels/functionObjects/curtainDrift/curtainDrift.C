@@ -204,6 +204,35 @@ bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
     flowDir_ /= mag(flowDir_);
     tolerance_ = dict.getOrDefault<scalar>("tolerance", 1e-4);
 
+    binWidth_ = 0;
+    lostPatches_.clear();
+    if (dict.found("landing"))
+    {
+        const dictionary& ld = dict.subDict("landing");
+        binWidth_ = ld.get<scalar>("binWidth");
+        if (!(binWidth_ > 0))
+        {
+            FatalIOErrorInFunction(ld)
+                << type() << ' ' << name() << ": landing/binWidth = " << binWidth_
+                << " outside the allowed range (0 inf) m" << exit(FatalIOError);
+        }
+        const wordList lost(ld.get<wordList>("lostPatches"));
+        DynamicList<label> ids;
+        for (const word& pn : lost)
+        {
+            const label id = mesh_.boundaryMesh().findPatchID(pn);
+            if (id < 0)
+            {
+                FatalIOErrorInFunction(ld)
+                    << type() << ' ' << name() << ": landing/lostPatches: '" << pn
+                    << "' is not a patch of the mesh " << mesh_.boundaryMesh().names()
+                    << exit(FatalIOError);
+            }
+            ids.append(id);
+        }
+        lostPatches_.transfer(ids);
+    }
+
     lone_ = dict.isDict("loneParticle");
     if (lone_)
     {
@@ -226,6 +255,117 @@ bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
 bool Foam::functionObjects::curtainDrift::execute()
 {
     return true;
+}
+
+
+void Foam::functionObjects::curtainDrift::writeLanding() const
+{
+    const vector u(up());
+    const label slotID = mesh_.boundaryMesh().findPatchID(releasePatch_);
+    const surfaceVectorField& Cf = mesh_.Cf();
+
+    // the bins span the floor faces' extent along the flow
+    scalar xMin = GREAT, xMax = -GREAT;
+    for (const label f : internalFaces_)
+    {
+        xMin = min(xMin, Cf[f] & flowDir_);
+        xMax = max(xMax, Cf[f] & flowDir_);
+    }
+    for (const labelPair& pf : boundaryFaces_)
+    {
+        const scalar x = Cf.boundaryField()[pf.first()][pf.second()] & flowDir_;
+        xMin = min(xMin, x);
+        xMax = max(xMax, x);
+    }
+    reduce(xMin, minOp<scalar>());
+    reduce(xMax, maxOp<scalar>());
+    const label b0 = label(std::floor(xMin/binWidth_));
+    const label nBins = label(std::floor(xMax/binWidth_)) - b0 + 1;
+
+    const label n = solids_->size();
+    List<scalarList> landed(n, scalarList(nBins, Zero)), landedX(n, scalarList(nBins, Zero));
+    scalarList lost(n, Zero), inflow(n, Zero), inflowX(n, Zero);
+    const vectorField& slotCf = Cf.boundaryField()[slotID];
+    forAll(solids_->names(), i)
+    {
+        const word& c = solids_->names()[i];
+        const scalar rhop = solids_->rho(i);
+        const surfaceScalarField& alphaPhi =
+            lookupObject<surfaceScalarField>(IOobject::groupName("alphaPhi", c));
+        const auto bin = [&](const scalar x)
+        {
+            return min(max(label(std::floor(x/binWidth_)) - b0, label(0)), nBins - 1);
+        };
+        forAll(internalFaces_, k)
+        {
+            const label f = internalFaces_[k];
+            const scalar x = Cf[f] & flowDir_;
+            const scalar md = rhop*alphaPhi[f]*internalSign_[k];
+            landed[i][bin(x)] += md;
+            landedX[i][bin(x)] += md*x;
+        }
+        forAll(boundaryFaces_, k)
+        {
+            const label patchi = boundaryFaces_[k].first();
+            const label f = boundaryFaces_[k].second();
+            const scalar x = Cf.boundaryField()[patchi][f] & flowDir_;
+            const scalar md = rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k];
+            landed[i][bin(x)] += md;
+            landedX[i][bin(x)] += md*x;
+        }
+        for (const label patchi : lostPatches_)
+        {
+            const scalarField& pPhi = alphaPhi.boundaryField()[patchi];
+            const vectorField& pCf = Cf.boundaryField()[patchi];
+            forAll(pPhi, f)
+            {
+                if ((pCf[f] & u) > floorHeight_ && pPhi[f] > 0)
+                {
+                    lost[i] += rhop*pPhi[f];
+                }
+            }
+        }
+        const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
+        forAll(slotPhi, f)
+        {
+            inflow[i] -= rhop*slotPhi[f];
+            inflowX[i] -= rhop*slotPhi[f]*(slotCf[f] & flowDir_);
+        }
+        reduce(landed[i], sumOp<scalarList>());
+        reduce(landedX[i], sumOp<scalarList>());
+        reduce(lost[i], sumOp<scalar>());
+        reduce(inflow[i], sumOp<scalar>());
+        reduce(inflowX[i], sumOp<scalar>());
+    }
+
+    if (Pstream::master())
+    {
+        const fileName dir = baseTimeDir();
+        mkDir(dir);
+        OFstream os(dir/"landing.csv");
+        os.precision(10);
+        // x_centre_m: the mass centre of what crossed in the bin (nan if nothing)
+        os  << "class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m" << nl;
+        forAll(solids_->names(), i)
+        {
+            const word& c = solids_->names()[i];
+            const scalar in = inflow[i] > VSMALL ? inflow[i] : NaN;
+            os  << c << ",slot,slot," << inflow[i] << ",1," << inflowX[i]/in << nl;
+            forAll(landed[i], b)
+            {
+                os  << c << ',' << (b0 + b)*binWidth_ << ',' << (b0 + b + 1)*binWidth_
+                    << ',' << landed[i][b] << ',' << landed[i][b]/in << ','
+                    << (mag(landed[i][b]) > VSMALL ? landedX[i][b]/landed[i][b] : NaN) << nl;
+            }
+            os  << c << ",lost,lost," << lost[i] << ',' << lost[i]/in << ",nan" << nl;
+        }
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << type() << ' ' << name() << ": cannot write " << os.name()
+                << exit(FatalError);
+        }
+    }
 }
 
 
@@ -336,6 +476,11 @@ bool Foam::functionObjects::curtainDrift::write()
                     << c << ": " << e.what() << exit(FatalError);
             }
         }
+    }
+
+    if (binWidth_ > 0 && time_.writeTime())
+    {
+        writeLanding();
     }
 
     const scalar bulkDrift =
