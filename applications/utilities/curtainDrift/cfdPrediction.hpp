@@ -25,6 +25,10 @@ struct CfdOptions
     std::string command = "curtainCase";
     std::string particleTurbulence;  //!< curtainCase -particleTurbulence (empty: its default)
     std::string turbulentDispersion; //!< curtainCase -turbulentDispersion (empty: its default)
+    //! how a row's advance is measured: "sherritt" (the tunnel's collection rule on the
+    //! landing distribution, drum/windTunnel/tunnelCollection.hpp) or "landed" (the mean
+    //! drift of what crossed the floor plane; a class that never lands fails the row)
+    std::string collection = "sherritt";
 };
 
 //- Bulk mean advance per test: sum_i x_i drift_i at the row's fall height
@@ -36,6 +40,16 @@ std::map<int, double> cfdPredictions
     const std::vector<drum::WindTunnelTest>& tests,
     const std::map<std::string, drum::WindTunnelMaterial>& materials,
     const CfdOptions& options
+);
+
+//- Read one curtainLanding.csv: the bulk advance the wind tunnel would have
+//  recorded at fall height y (its collection rule), classes c0, c1, ... in the
+//  order of `fractions`
+double readLandingAdvance
+(
+    const std::filesystem::path& file,
+    double fallHeight,
+    const std::vector<double>& fractions
 );
 
 //- Read one curtainResult.csv: the mass-weighted drift at fall height y of

@@ -47,7 +47,7 @@ const char* usage =
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]\n"
-    "               [-work DIR] [-keep] [-skipFailed]\n"
+    "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed]\n"
     "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
@@ -75,7 +75,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -206,6 +206,11 @@ int predict(const Args& a)
             }
             return v;
         };
+        o.collection = a.get("collection", "sherritt");
+        if (o.collection != "sherritt" && o.collection != "landed")
+        {
+            throw drum::InputError("", "-collection", "'" + o.collection + "': valid names are sherritt, landed");
+        }
         o.particleTurbulence = named("particleTurbulence", "Simonin");
         o.turbulentDispersion = named("turbulentDispersion", "gradientDiffusion");
         o.keep = a.has("keep");

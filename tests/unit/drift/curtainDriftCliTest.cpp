@@ -259,7 +259,16 @@ TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
         "cells,iterations,wall_time_s,converged > $D/curtainResult.csv\n"
         "for h in $(echo $HS | tr , ' '); do i=0; for d in $(echo $DS | tr , ' '); do i=$((i+1));"
         " echo $i,$d,0.1,$h,$(awk \"BEGIN{print 1000*$d}\"),1,0.5,1,100,10,1,1 >> $D/curtainResult.csv; done;"
-        " echo bulk,,,$h,0,1,0.5,1,100,10,1,1 >> $D/curtainResult.csv; done\n";
+        " echo bulk,,,$h,0,1,0.5,1,100,10,1,1 >> $D/curtainResult.csv; done\n"
+        // landing: half of every class on the suspended platform at x = 2.1 m, a quarter on
+        // the fixed one, the rest lost; released at 1.5 m
+        "echo fall_height_m,class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m > $D/curtainLanding.csv\n"
+        "for h in $(echo $HS | tr , ' '); do i=0; for d in $(echo $DS | tr , ' '); do"
+        " echo $h,c$i,slot,slot,1,1,1.5 >> $D/curtainLanding.csv;"
+        " echo $h,c$i,2,2.25,0.5,0.5,2.1 >> $D/curtainLanding.csv;"
+        " echo $h,c$i,7.25,7.5,0,0,nan >> $D/curtainLanding.csv;"
+        " echo $h,c$i,8,8.25,0.25,0.25,8.2 >> $D/curtainLanding.csv;"
+        " echo $h,c$i,lost,lost,0.1,0.1,nan >> $D/curtainLanding.csv; i=$((i+1)); done; done\n";
     fs::permissions(bin/"curtainCase", fs::perms::owner_all);
     // three rows of the shared tests, one per material
     const fs::path few = dir()/"few.csv";
@@ -278,7 +287,8 @@ TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
     }
     const fs::path out = dir()/"cfd.csv";
     const std::string path = "PATH=" + bin.string() + ":$PATH";
-    const CliRun r = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -work " + (dir()/"work").string(), path);
+    const CliRun r = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -collection landed -work "
+                         + (dir()/"work").string(), path);
     ASSERT_EQ(r.rc, 0) << r.out;
     EXPECT_NE(r.out.find("cfd 3/3"), std::string::npos) << r.out;
     const auto materials = drum::readWindTunnelMaterials(data/"windtunnel_materials.csv");
@@ -292,6 +302,22 @@ TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
         EXPECT_NEAR(p.at(t.test), e, 1e-6*e) << t.test;
     }
     EXPECT_FALSE(fs::exists(dir()/"work"));
+    // the wind tunnel's collection rule (Sherritt 1991 section 4.3.1, the default): the
+    // suspended platform's exact centre, the fixed platform's centre (9.4 m), the lost part
+    // (the feed's balance, not the outlet row) at 11.3 m, minus the release:
+    // 0.5 x 2.1 + 0.25 x 9.4 + 0.25 x 11.3 - 1.5 = 4.725 m for every class
+    fs::remove(out);
+    const CliRun rule = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -work "
+                            + (dir()/"workRule").string(), path);
+    ASSERT_EQ(rule.rc, 0) << rule.out;
+    for (const auto& [test, advance] : readPred(out))
+    {
+        EXPECT_NEAR(advance, 4.725, 1e-9) << test;
+    }
+    const CliRun badName = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -collection hopper",
+                               path);
+    EXPECT_NE(badName.rc, 0);
+    EXPECT_NE(badName.out.find("-collection"), std::string::npos) << badName.out;
     // a failing case: error naming the test, no output
     fs::remove(out);
     const CliRun bad = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -level medium -work "
