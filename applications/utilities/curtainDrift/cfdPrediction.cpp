@@ -4,7 +4,10 @@
 #include "drum/io/inputError.hpp"
 #include "drum/windTunnel/tunnelCollection.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <mutex>
+#include <thread>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
@@ -191,68 +194,119 @@ std::map<int, double> cfdPredictions
 {
     using clock = std::chrono::steady_clock;
     const auto start = clock::now();
-    std::map<int, double> out;
     fs::create_directories(o.work);
-    int done = 0;
-    for (const auto& t : tests)
+
+    // one curtainCase per row; o.jobs rows at a time (each its own process)
+    struct Row
     {
-        const auto& m = materials.at(t.material);
+        std::string cmd;
+        fs::path dir, log;
         std::vector<double> d, w;
+        bool ok = false;
+        double advance = 0;
+        std::string error;
+    };
+    std::vector<Row> rows(tests.size());
+    for (std::size_t k = 0; k < tests.size(); ++k)
+    {
+        const auto& t = tests[k];
+        const auto& m = materials.at(t.material);
+        Row& r = rows[k];
         for (const auto& c : m.classes)
         {
-            d.push_back(c.diameter);
-            w.push_back(c.massFraction);
+            r.d.push_back(c.diameter);
+            r.w.push_back(c.massFraction);
         }
-        const fs::path dir = o.work/("test" + std::to_string(t.test));
-        fs::remove_all(dir);
+        r.dir = o.work/("test" + std::to_string(t.test));
+        r.log = o.work/("test" + std::to_string(t.test) + ".log");
         std::ostringstream cmd;
         cmd.precision(10);
-        cmd << o.command << " -dir " << quote(dir.string()) << " -gasVelocity " << t.airVelocity
+        cmd << o.command << " -dir " << quote(r.dir.string()) << " -gasVelocity " << t.airVelocity
             << " -spillRate " << t.spillRate << " -fallHeight " << t.fallHeight
             << " -flightLength " << t.flightLength << " -density " << m.particleDensity
-            << " -diameters " << join(d) << " -fractions " << join(w) << " -heights " << t.fallHeight
+            << " -diameters " << join(r.d) << " -fractions " << join(r.w) << " -heights " << t.fallHeight
             << " -level " << o.level << " -np " << o.np;
         if (!o.drag.empty()) cmd << " -drag " << o.drag;
         if (!o.particleTurbulence.empty()) cmd << " -particleTurbulence " << o.particleTurbulence;
         if (!o.turbulentDispersion.empty()) cmd << " -turbulentDispersion " << o.turbulentDispersion;
         if (o.keep) cmd << " -keep";
-        const fs::path log = o.work/("test" + std::to_string(t.test) + ".log");
-        std::cout << "curtainDrift: cfd " << done + 1 << "/" << tests.size() << ": test " << t.test
-                  << " (" << t.material << ", V_g " << t.airVelocity << " m/s, S " << t.spillRate
-                  << " kg/(m s), y " << t.fallHeight << " m) ..." << std::flush;
-        const auto t0 = clock::now();
-        const int status = std::system((cmd.str() + " > " + quote(log.string()) + " 2>&1").c_str());
-        const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-        try
+        r.cmd = cmd.str();
+    }
+
+    std::mutex mutex;
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> stop{false};
+    std::size_t done = 0;
+    const auto work = [&]()
+    {
+        for (std::size_t k; !stop && (k = next++) < rows.size();)
         {
-            if (rc != 0)
+            const auto& t = tests[k];
+            Row& r = rows[k];
             {
-                throw InputError(log.string(), "test " + std::to_string(t.test),
-                    "curtainCase failed (exit " + std::to_string(rc) + "); command: " + cmd.str());
+                std::lock_guard<std::mutex> lock(mutex);
+                std::cout << "curtainDrift: cfd test " << t.test << " (" << t.material << ", V_g "
+                          << t.airVelocity << " m/s, S " << t.spillRate << " kg/(m s), y " << t.fallHeight
+                          << " m) started" << std::endl;
+                fs::remove_all(r.dir);
             }
-            out[t.test] = o.collection == "landed"
-                ? readCurtainResult(dir/"curtainResult.csv", t.fallHeight, d, w)
-                : readLandingAdvance(dir/"curtainLanding.csv", t.fallHeight, w);
-        }
-        catch (const InputError& e)
-        {
-            std::cout << " failed" << std::endl;
-            if (!o.skipFailed) throw;
-            std::cout << "curtainDrift: test " << t.test << " left out: " << e.what() << std::endl;
+            const auto t0 = clock::now();
+            const int status = std::system((r.cmd + " > " + quote(r.log.string()) + " 2>&1").c_str());
+            const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+            try
+            {
+                if (rc != 0)
+                {
+                    throw InputError(r.log.string(), "test " + std::to_string(t.test),
+                        "curtainCase failed (exit " + std::to_string(rc) + "); command: " + r.cmd);
+                }
+                r.advance = o.collection == "landed"
+                    ? readCurtainResult(r.dir/"curtainResult.csv", t.fallHeight, r.d, r.w)
+                    : readLandingAdvance(r.dir/"curtainLanding.csv", t.fallHeight, r.w);
+                r.ok = true;
+            }
+            catch (const InputError& e)
+            {
+                r.error = e.what();
+                if (!o.skipFailed) stop = true;
+            }
+            std::lock_guard<std::mutex> lock(mutex);
             ++done;
-            continue;
+            const double el = std::chrono::duration<double>(clock::now() - start).count();
+            const double row = std::chrono::duration<double>(clock::now() - t0).count();
+            std::ostringstream msg;
+            msg << "curtainDrift: cfd " << done << "/" << rows.size() << ": test " << t.test << " ";
+            if (r.ok)
+            {
+                msg << std::fixed << std::setprecision(3) << r.advance << " m in " << std::setprecision(0)
+                    << row << " s; about " << el/done*(rows.size() - done) << " s left";
+            }
+            else
+            {
+                msg << "failed" << (o.skipFailed ? " (left out): " : ": ") << r.error;
+            }
+            std::cout << msg.str() << std::endl;
+            if (r.ok && !o.keep)
+            {
+                fs::remove_all(r.dir);
+                fs::remove(r.log);
+            }
         }
-        ++done;
-        const double el = std::chrono::duration<double>(clock::now() - start).count();
-        const double row = std::chrono::duration<double>(clock::now() - t0).count();
-        std::ostringstream msg;
-        msg << std::fixed << std::setprecision(3) << out[t.test] << " m in " << std::setprecision(0) << row
-            << " s; about " << el/done*(tests.size() - done) << " s left";
-        std::cout << " " << msg.str() << std::endl;
-        if (!o.keep)
+    };
+    std::vector<std::thread> pool;
+    for (int j = 0; j < std::max(1, o.jobs); ++j) pool.emplace_back(work);
+    for (auto& th : pool) th.join();
+
+    std::map<int, double> out;
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        if (rows[k].ok)
         {
-            fs::remove_all(dir);
-            fs::remove(log);
+            out[tests[k].test] = rows[k].advance;
+        }
+        else if (!o.skipFailed && !rows[k].error.empty())
+        {
+            throw InputError(rows[k].log.string(), "test " + std::to_string(tests[k].test), rows[k].error);
         }
     }
     return out;

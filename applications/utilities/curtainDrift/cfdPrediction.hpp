@@ -18,6 +18,7 @@ struct CfdOptions
 {
     std::string level = "coarse";   //!< curtainCase -level
     int np = 1;                     //!< curtainCase -np
+    int jobs = 1;                   //!< rows run at once (each a curtainCase process)
     std::string drag;               //!< curtainCase -drag (empty: its default)
     std::filesystem::path work;     //!< one sub-folder per test
     bool keep = false;              //!< keep the case folders

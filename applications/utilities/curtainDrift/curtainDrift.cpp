@@ -47,7 +47,7 @@ const char* usage =
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]\n"
-    "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed]\n"
+    "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
@@ -75,7 +75,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -195,6 +195,11 @@ int predict(const Args& a)
             throw drum::InputError("", "-level", "'" + o.level + "': valid levels are coarse, medium, fine");
         }
         o.np = std::stoi(a.get("np", "1"));
+        o.jobs = std::stoi(a.get("jobs", "1"));
+        if (o.jobs < 1 || o.jobs > 64)
+        {
+            throw drum::InputError("", "-jobs", "'" + a.get("jobs") + "' outside the allowed range [1, 64]");
+        }
         o.drag = a.get("drag");
         // curtainCase's names, checked here so that a typo stops before the first row runs
         const auto named = [&](const std::string& option, const std::string& other)
