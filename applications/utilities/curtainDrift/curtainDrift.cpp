@@ -3,7 +3,9 @@
 //   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE[,FILE...]] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
-//                [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]
+//                [-turbulence kEpsilon|realizableKE|kOmegaSST]
+//                [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]
+//                [-turbulentDispersion none|gradientDiffusion]
 //                                     (cfd: curtainCase's options)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
@@ -46,7 +48,9 @@ const char* usage =
     "usage:\n"
     "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
-    "               [-drag NAME] [-particleTurbulence none|Simonin] [-turbulentDispersion none|gradientDiffusion]\n"
+    "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
+    "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
+    "               [-turbulentDispersion none|gradientDiffusion]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
@@ -75,7 +79,8 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs"};
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
+        "turbulence", "wakeShare"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -202,12 +207,14 @@ int predict(const Args& a)
         }
         o.drag = a.get("drag");
         // curtainCase's names, checked here so that a typo stops before the first row runs
-        const auto named = [&](const std::string& option, const std::string& other)
+        const auto named = [&](const std::string& option, const std::vector<std::string>& valid)
         {
             const std::string v = a.get(option);
-            if (!v.empty() && v != "none" && v != other)
+            if (!v.empty() && std::find(valid.begin(), valid.end(), v) == valid.end())
             {
-                throw drum::InputError("", "-" + option, "'" + v + "': valid names are none, " + other);
+                std::string list;
+                for (const auto& n : valid) list += (list.empty() ? "" : ", ") + n;
+                throw drum::InputError("", "-" + option, "'" + v + "': valid names are " + list);
             }
             return v;
         };
@@ -216,8 +223,14 @@ int predict(const Args& a)
         {
             throw drum::InputError("", "-collection", "'" + o.collection + "': valid names are sherritt, landed");
         }
-        o.particleTurbulence = named("particleTurbulence", "Simonin");
-        o.turbulentDispersion = named("turbulentDispersion", "gradientDiffusion");
+        o.turbulence = named("turbulence", {"kEpsilon", "realizableKE", "kOmegaSST"});
+        o.particleTurbulence = named("particleTurbulence", {"none", "Simonin", "SimoninCrowe"});
+        o.turbulentDispersion = named("turbulentDispersion", {"none", "gradientDiffusion"});
+        o.wakeShare = a.get("wakeShare");
+        if (!o.wakeShare.empty() && o.particleTurbulence != "SimoninCrowe")
+        {
+            throw drum::InputError("", "-wakeShare", "an entry of -particleTurbulence SimoninCrowe only");
+        }
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());

@@ -3,7 +3,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTurbulenceInteraction.H"
-#include "crossingTrajectories.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
 #include "volFields.H"
@@ -19,24 +18,40 @@ namespace fv
 }
 
 
-void Foam::fv::particleTurbulenceInteraction::readCoeffs()
+void Foam::fv::particleTurbulenceInteraction::readModel(const dictionary& dict)
 {
-    C3eps_ = coeffs_.getOrDefault<scalar>("C3eps", 1.2);
-    Cmu_ = coeffs_.getOrDefault<scalar>("Cmu", 0.09);
-    Cbeta_ = coeffs_.getOrDefault<scalar>("Cbeta", 1.35);
-    const auto check = [&](const char* entry, scalar v, scalar lo, scalar hi)
+    const word model(dict.get<word>("model"));
+    const wordList allowed({"type", "active", "timeStart", "duration", "model", model + "Coeffs"});
+    for (const word& key : dict.toc())
     {
-        if (!(v >= lo && v <= hi))
+        if (!allowed.found(key))
         {
-            FatalIOErrorInFunction(coeffs_)
-                << "Entry '" << entry << "' = " << v << " of fvOption " << name_
-                << " outside the allowed range [" << lo << ", " << hi << "]"
-                << exit(FatalIOError);
+            FatalIOErrorInFunction(dict)
+                << "Unknown entry '" << key << "' of fvOption " << name_
+                << "; allowed entries: " << allowed << exit(FatalIOError);
         }
-    };
-    check("C3eps", C3eps_, 0, 5);
-    check("Cmu", Cmu_, 0.01, 1);
-    check("Cbeta", Cbeta_, 0, 10);
+    }
+    model_ = particleTurbulenceModel::New(dict, solids_, mesh_);
+
+    const word& gas = solids_.gasName();
+    omegaForm_ = mesh_.foundObject<volScalarField>(IOobject::groupName("omega", gas));
+    if (model_->active())
+    {
+        fieldNames_.setSize(2);
+        fieldNames_[0] = IOobject::groupName("k", gas);
+        fieldNames_[1] = IOobject::groupName(omegaForm_ ? "omega" : "epsilon", gas);
+    }
+    else
+    {
+        fieldNames_.clear();
+    }
+    applied_.setSize(fieldNames_.size(), false);
+    Info<< "    " << name_ << ": " << model_->summary().c_str();
+    if (model_->active())
+    {
+        Info<< " in " << fieldNames_[0] << " and " << fieldNames_[1];
+    }
+    Info<< " from " << solids_.size() << " classes" << endl;
 }
 
 
@@ -50,57 +65,10 @@ Foam::fv::particleTurbulenceInteraction::particleTurbulenceInteraction
 :
     option(name, modelType, dict, mesh),
     solids_(mesh),
-    C3eps_(1.2),
-    Cmu_(0.09),
-    Cbeta_(1.35)
+    model_(),
+    omegaForm_(false)
 {
-    readCoeffs();
-    fieldNames_.setSize(2);
-    fieldNames_[0] = IOobject::groupName("k", solids_.gasName());
-    fieldNames_[1] = IOobject::groupName("epsilon", solids_.gasName());
-    applied_.setSize(fieldNames_.size(), false);
-    Info<< "    " << name_ << ": particle sink in " << fieldNames_[0] << " and " << fieldNames_[1]
-        << " from " << solids_.size() << " classes (C3eps " << C3eps_ << ", Cmu " << Cmu_
-        << ", Cbeta " << Cbeta_ << ")" << endl;
-}
-
-
-Foam::tmp<Foam::volScalarField>
-Foam::fv::particleTurbulenceInteraction::damping() const
-{
-    const word& gas = solids_.gasName();
-    const auto& k = mesh_.lookupObject<volScalarField>(IOobject::groupName("k", gas));
-    const auto& eps = mesh_.lookupObject<volScalarField>(IOobject::groupName("epsilon", gas));
-    const auto& Ug = mesh_.lookupObject<volVectorField>(IOobject::groupName("U", gas));
-
-    const dimensionedScalar epsSmall("epsSmall", eps.dimensions(), SMALL);
-    // eddy life time 3/2 Cmu k/eps (Simonin 1990)
-    const volScalarField tauEddy(1.5*Cmu_*k/max(eps, epsSmall));
-
-    tmp<volScalarField> tD
-    (
-        new volScalarField
-        (
-            IOobject(name_ + ":damping", mesh_.time().timeName(), mesh_),
-            mesh_,
-            dimensionedScalar(dimless/dimTime, Zero)
-        )
-    );
-    volScalarField& D = tD.ref();
-    const dimensionedScalar rhoG("rhoG", dimDensity, solids_.rhoGas());
-    forAll(solids_.names(), i)
-    {
-        const word& c = solids_.names()[i];
-        const auto& alpha = mesh_.lookupObject<volScalarField>(IOobject::groupName("alpha", c));
-        const auto& beta = mesh_.lookupObject<volScalarField>(IOobject::groupName("beta", c));
-        const auto& Up = mesh_.lookupObject<volVectorField>(IOobject::groupName("U", c));
-        // Csanady's crossing trajectories: the particle leaves the eddy
-        const volScalarField tauT(tauEddy*crossingTrajectoryFactor(Up, Ug, k, Cbeta_));
-        const dimensionedScalar rhoP("rhoP", dimDensity, solids_.rho(i));
-        const volScalarField eta(tauT*beta/rhoP);
-        D += 2*max(alpha, scalar(0))*beta/(rhoG*(1 + eta));
-    }
-    return tD;
+    readModel(dict);
 }
 
 
@@ -112,14 +80,34 @@ void Foam::fv::particleTurbulenceInteraction::addSup
     const label fieldi
 )
 {
-    const volScalarField D(damping());
+    const volScalarField D(model_->sinkRate());
+    const volScalarField P(model_->production());
+    const bool producing = gMax(P.primitiveField()) > 0;
+    const scalar C3 = model_->C3eps();
     if (fieldi == 0)
     {
-        eqn -= fvm::Sp(D, eqn.psi());            // S_k = -D k
+        if (producing)
+        {
+            eqn += P;                                 // S_k = P - D k
+        }
+        eqn -= fvm::Sp(D, eqn.psi());
+        return;
+    }
+    if (!producing && !omegaForm_)
+    {
+        eqn -= fvm::Sp(C3*D, eqn.psi());              // S_eps = -C3eps D eps
+        return;
+    }
+    const volScalarField& k = mesh_.lookupObject<volScalarField>(fieldNames_[0]);
+    const dimensionedScalar kSmall("kSmall", k.dimensions(), SMALL);
+    const volScalarField rate(D - P/max(k, kSmall));  // -S_k/k
+    if (omegaForm_)
+    {
+        eqn -= fvm::SuSp((C3 - 1)*rate, eqn.psi());   // S_omega = (C3eps - 1) omega S_k/k
     }
     else
     {
-        eqn -= fvm::Sp(C3eps_*D, eqn.psi());     // S_eps = C3eps eps/k S_k
+        eqn -= fvm::SuSp(C3*rate, eqn.psi());         // S_eps = C3eps eps S_k/k
     }
 }
 
@@ -128,7 +116,7 @@ void Foam::fv::particleTurbulenceInteraction::addSup(fvMatrix<scalar>& eqn, cons
 {
     FatalErrorInFunction
         << "fvOption " << name_ << " (particleTurbulenceInteraction) applies to the phase form of "
-        << eqn.psi().name() << " only (the kEpsilon of curtainFoam's gas)" << exit(FatalError);
+        << eqn.psi().name() << " only (the turbulence model of curtainFoam's gas)" << exit(FatalError);
 }
 
 
@@ -147,7 +135,7 @@ bool Foam::fv::particleTurbulenceInteraction::read(const dictionary& dict)
 {
     if (option::read(dict))
     {
-        readCoeffs();
+        readModel(dict);
         return true;
     }
     return false;
