@@ -14,13 +14,15 @@ AutoDrift::AutoDrift
     std::shared_ptr<const DriftModel> insideModel,
     std::shared_ptr<const PorousSheetDrift> reduced,
     std::shared_ptr<const DriftModel> isolated,
-    AutoDriftOptions options
+    AutoDriftOptions options,
+    std::shared_ptr<const DriftModel> outsideModel
 )
 :
     table_(std::move(table)),
     inside_(std::move(insideModel)),
     reduced_(std::move(reduced)),
     isolated_(std::move(isolated)),
+    outside_(outsideModel ? std::move(outsideModel) : reduced_),
     options_(options),
     counters_(std::make_shared<Counters>())
 {
@@ -91,7 +93,7 @@ std::string AutoDrift::modelName(Choice c) const
     {
         case dilute: return isolated_->name();
         case inside: return inside_ ? inside_->name() : "(none)";
-        case outside: return reduced_->name();
+        case outside: return outside_->name();
     }
     return "?";
 }
@@ -114,7 +116,7 @@ double AutoDrift::displacement(const DriftQuery& q) const
         case inside: return inside_->displacement(q);
         case outside: break;
     }
-    return reduced_->displacement(q);
+    return outside_->displacement(q);
 }
 
 

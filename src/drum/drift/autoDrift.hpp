@@ -11,9 +11,12 @@
 //                 axis (an axis the sweep held fixed covers +-fixedAxisTolerance
 //                 of its value; below the smallest fall height the table's
 //                 exact anchor applies): the table model (tableVc by default)
-//   3. outside    anywhere else: the reduced model, and the report names the
-//                 axis and the range, advising a fresh CFD run there
-//                 (curtainCase, or buildDriftTable over a wider grid)
+//   3. outside    anywhere else: Sherritt's Eq 142 (the model the wind-tunnel
+//                 scores support outside any table: docs/validation.md;
+//                 drift.auto.outside: porousSheet selects the reduced model),
+//                 and the report names the axis and the range, advising a
+//                 fresh CFD run there (curtainCase, or buildDriftTable over a
+//                 wider grid)
 //
 // The user overrides by naming any model instead of "auto".
 #ifndef DRUM_DRIFT_AUTODRIFT_HPP
@@ -43,14 +46,16 @@ public:
     enum Choice { dilute = 0, inside = 1, outside = 2 };
 
     //- table may be null (no table: inside never applies); insideModel
-    //  reads that table (table or tableVc)
+    //  reads that table (table or tableVc); reduced judges dilution;
+    //  outsideModel answers outside the table (null: reduced)
     AutoDrift
     (
         std::shared_ptr<const DriftTable> table,
         std::shared_ptr<const DriftModel> insideModel,
         std::shared_ptr<const PorousSheetDrift> reduced,
         std::shared_ptr<const DriftModel> isolated,
-        AutoDriftOptions options = {}
+        AutoDriftOptions options = {},
+        std::shared_ptr<const DriftModel> outsideModel = nullptr
     );
 
     double displacement(const DriftQuery& q) const override;
@@ -73,6 +78,7 @@ private:
     std::shared_ptr<const DriftModel> inside_;
     std::shared_ptr<const PorousSheetDrift> reduced_;
     std::shared_ptr<const DriftModel> isolated_;
+    std::shared_ptr<const DriftModel> outside_;
     AutoDriftOptions options_;
 
     struct Counters

@@ -93,7 +93,7 @@ DriftSettings readDriftSettings
     }
     if (const YAML::Node a = d["auto"])
     {
-        if (!a.IsMap()) throw InputError(file, "drift.auto", "must be a dictionary (inside, diluteRatio, fixedAxisTolerance)");
+        if (!a.IsMap()) throw InputError(file, "drift.auto", "must be a dictionary (inside, outside, diluteRatio, fixedAxisTolerance)");
         for (const auto& kv : a)
         {
             const std::string k = kv.first.as<std::string>();
@@ -103,6 +103,14 @@ DriftSettings readDriftSettings
                 if (s.autoInside != "table" && s.autoInside != "tableVc")
                 {
                     throw InputError(file, "drift.auto.inside", "'" + s.autoInside + "': valid names are table, tableVc");
+                }
+            }
+            else if (k == "outside")
+            {
+                s.autoOutside = scalar(kv.second, file, "drift.auto.outside");
+                if (s.autoOutside != "sherritt" && s.autoOutside != "porousSheet")
+                {
+                    throw InputError(file, "drift.auto.outside", "'" + s.autoOutside + "': valid names are sherritt, porousSheet");
                 }
             }
             else if (k == "diluteRatio" || k == "fixedAxisTolerance")
@@ -116,7 +124,7 @@ DriftSettings readDriftSettings
             }
             else
             {
-                throw InputError(file, "drift.auto." + k, "unknown entry; valid entries are inside, diluteRatio, fixedAxisTolerance");
+                throw InputError(file, "drift.auto." + k, "unknown entry; valid entries are inside, outside, diluteRatio, fixedAxisTolerance");
             }
         }
     }
@@ -170,7 +178,9 @@ std::shared_ptr<const DriftModel> makeDriftModel
         const auto constants = s.constants.empty() ? defaultPorousSheetConstantsFile() : s.constants;
         auto reduced = std::make_shared<const PorousSheetDrift>(readPorousSheetConstants(constants), gas, law, s.curtainDiameter);
         auto isolated = std::make_shared<const IsolatedParticleDrift>(gas, law);
-        return std::make_shared<AutoDrift>(table, inside, reduced, isolated, s.autoOptions);
+        std::shared_ptr<const DriftModel> outside;
+        if (s.autoOutside == "sherritt") outside = std::make_shared<SherrittSheetDrift>(gas, law);
+        return std::make_shared<AutoDrift>(table, inside, reduced, isolated, s.autoOptions, outside);
     }
     throw InputError("", entry, "unknown drift model '" + s.model + "': valid names are " + nameList());
 }

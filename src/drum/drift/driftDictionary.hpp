@@ -42,8 +42,11 @@ struct DriftSettings
     //- porousSheet: surface-mean diameter of the curtain's solids (set by
     //  the caller from the material, sauterDiameter()); 0: each class alone
     double curtainDiameter = 0;
-    //- model auto: the table model inside the table, and the thresholds
+    //- model auto: the table model inside the table, the model outside it
+    //  (sherritt: Eq 142, which the wind-tunnel scores support there; or
+    //  porousSheet), and the thresholds
     std::string autoInside = "tableVc";
+    std::string autoOutside = "sherritt";
     AutoDriftOptions autoOptions;
 };
 

@@ -127,6 +127,15 @@ TEST(AutoDrift, ChoosesTheCheapestAdequateModelAndSaysWhy)
     const AutoDrift noTable(nullptr, nullptr, m.reduced, m.isolated);
     EXPECT_EQ(noTable.choose(in, &why), AutoDrift::outside);
     EXPECT_NE(why.find("no drift table"), std::string::npos);
+
+    // An outside model of its own (the dictionary's default: Eq 142) answers
+    // outside the table; dilution is still judged by the reduced model
+    const auto eq142 = std::make_shared<const SherrittSheetDrift>(air);
+    const AutoDrift withEq142(m.table, m.inside, m.reduced, m.isolated, {}, eq142);
+    EXPECT_EQ(withEq142.modelName(AutoDrift::outside), "sherritt");
+    EXPECT_DOUBLE_EQ(withEq142.displacement(beyond), eq142->displacement(beyond));
+    EXPECT_NE(eq142->displacement(beyond), m.reduced->displacement(beyond));
+    EXPECT_DOUBLE_EQ(withEq142.displacement(dilute), m.isolated->displacement(dilute));
 }
 
 
@@ -152,7 +161,11 @@ TEST(AutoDrift, DictionaryEntriesAndErrors)
     ASSERT_EQ(m->name(), "auto");
     const auto& a = dynamic_cast<const AutoDrift&>(*m);
     EXPECT_EQ(a.modelName(AutoDrift::inside), "table");
+    EXPECT_EQ(a.modelName(AutoDrift::outside), "sherritt");   // the default outside the table
     EXPECT_EQ(a.choose(query(3, 8, 4, 1.15, 2650, 5e-4)), AutoDrift::outside);  // 15 % > 10 %
+    const auto r = makeDriftModel(read("model: {drift: auto}\ndrift: {table: t.csv, constants: ps.yaml, "
+                                       "auto: {outside: porousSheet}}\n"), air);
+    EXPECT_EQ(dynamic_cast<const AutoDrift&>(*r).modelName(AutoDrift::outside), "porousSheet");
 
     auto expectError = [&](const std::string& yaml, const std::string& entry)
     {
@@ -170,4 +183,5 @@ TEST(AutoDrift, DictionaryEntriesAndErrors)
     expectError("model: {drift: auto}\ndrift: {auto: {diluteRatio: 1.5}}\n", "drift.auto.diluteRatio");
     expectError("model: {drift: auto}\ndrift: {auto: {fixedAxisTolerance: x}}\n", "drift.auto.fixedAxisTolerance");
     expectError("model: {drift: auto}\ndrift: {auto: {dilute: 0.9}}\n", "drift.auto.dilute");
+    expectError("model: {drift: auto}\ndrift: {auto: {outside: isolated}}\n", "drift.auto.outside");
 }
