@@ -1,0 +1,42 @@
+#!/bin/sh
+# crossValidate on synthetic candidates with known answers: A is 10 % high on
+# every row, B is exact at 10.3 m and 35 % high (ln 0.3) at 6.6 m. Leaving out
+# 10.3 m the 6.6 m rows choose A, leaving out 6.6 m the 10.3 m rows choose B,
+# so the pooled held-out RMS ln is sqrt((26*0.3^2 + 43*ln(1.1)^2)/69) =
+# 0.1989 although either candidate alone does better in sample on its own
+# rows; leaving one material out always chooses A (0.0953). A non-positive
+# advance is refused naming the file and line, with nothing written.
+# Usage: crossValidateTest.sh CROSSVALIDATE DATA_DIR WORK_DIR
+set -u
+script="$1"; data="$2"; work="$3"
+rm -rf "$work" && mkdir -p "$work/r/predictions"
+fail() { echo "FAIL: $*"; exit 1; }
+awk -F, 'NR==1{print "test,mean_advance_m"; next} {printf "%d,%.12g\n", $1, 1.1*$10}' \
+    "$data/windtunnel_tests.csv" > "$work/r/predictions/A.csv"
+awk -F, 'NR==1{print "test,mean_advance_m"; next} {printf "%d,%.12g\n", $1, ($9 == "6.6" ? exp(0.3) : 1)*$10}' \
+    "$data/windtunnel_tests.csv" > "$work/r/predictions/B.csv"
+DRYER_DATA="$data" "$script" -candidates A,B -results "$work/r" > "$work/log" 2>&1 \
+    || { cat "$work/log"; fail "crossValidate exit $?"; }
+cv="$work/r/crossValidation.csv"; br="$work/r/scoresBreakdown.csv"
+grep -q "^fall_height,10.3,A," "$cv" || fail "10.3 m held out: A not chosen"
+grep -q "^fall_height,6.6,B," "$cv" || fail "6.6 m held out: B not chosen"
+[ "$(grep -c '^material,.*,A,' "$cv")" = 3 ] || fail "leave one material out: A not chosen three times"
+get() { awk -F, -v m="$1" -v g="$2" -v v="$3" '$1==m && $3==g && $4==v {print $6}' "$br"; }
+near() { awk -v a="$1" -v b="$2" 'BEGIN{exit !(a != "" && (a-b)^2 <= 1e-8)}' || fail "$3: $1, expected $2"; }
+near "$(get cv_height all all)" 0.1989 "leave one fall height out"
+near "$(get cv_height fall_height_m 6.6)" 0.3000 "6.6 m rows out of sample"
+near "$(get cv_material all all)" 0.0953 "leave one material out"
+near "$(get A all all)" 0.0953 "A in sample"
+awk -F, '$1=="A" && $3=="all" {exit !($2=="in")} ' "$br" || fail "a candidate is not labelled in-sample"
+awk -F, '$1=="cv_height" && $3=="all" {exit !($2=="out")} ' "$br" || fail "the choice is not labelled out-of-sample"
+[ -s "$work/r/crossValidation.png" ] && [ -s "$work/r/predictions/cv_height.csv" ] || fail "png or predictions missing"
+# bad input
+sed 's/^11,.*/11,-1/' "$work/r/predictions/A.csv" > "$work/r/predictions/C.csv"
+mkdir -p "$work/bad"
+set +e
+DRYER_DATA="$data" "$script" -candidates C,B -results "$work/r" -out "$work/bad" > "$work/log.bad" 2>&1; rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q "C.csv line 2: advance -1.0 outside the allowed range (0, inf) m" "$work/log.bad" \
+    || { cat "$work/log.bad"; fail "non-positive advance not refused (exit $rc)"; }
+[ ! -e "$work/bad/scoresBreakdown.csv" ] || fail "output written for bad input"
+echo "PASS: crossValidate"
