@@ -231,6 +231,7 @@ std::map<int, double> cfdPredictions
         if (!o.turbulentDispersion.empty()) cmd << " -turbulentDispersion " << o.turbulentDispersion;
         if (!o.turbulence.empty()) cmd << " -turbulence " << o.turbulence;
         if (!o.wakeShare.empty()) cmd << " -wakeShare " << quote(o.wakeShare);
+        if (!o.releaseVelocity.empty()) cmd << " -releaseVelocity " << quote(o.releaseVelocity);
         if (o.keep) cmd << " -keep";
         r.cmd = cmd.str();
     }

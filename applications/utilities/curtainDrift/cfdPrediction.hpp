@@ -28,6 +28,7 @@ struct CfdOptions
     std::string turbulentDispersion; //!< curtainCase -turbulentDispersion (empty: its default)
     std::string turbulence;          //!< curtainCase -turbulence (empty: the template's gas model)
     std::string wakeShare;           //!< curtainCase -wakeShare (empty: its default; checked there)
+    std::string releaseVelocity;     //!< curtainCase -releaseVelocity (empty: the template's)
     //! how a row's advance is measured: "sherritt" (the tunnel's collection rule on the
     //! landing distribution, drum/windTunnel/tunnelCollection.hpp) or "landed" (the mean
     //! drift of what crossed the floor plane; a class that never lands fails the row)

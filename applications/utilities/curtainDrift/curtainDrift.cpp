@@ -5,8 +5,9 @@
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
 //                [-turbulence kEpsilon|realizableKE|kOmegaSST]
 //                [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]
-//                [-turbulentDispersion none|gradientDiffusion]
+//                [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V]
 //                                     (cfd: curtainCase's options)
+//                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
@@ -50,7 +51,7 @@ const char* usage =
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
-    "               [-turbulentDispersion none|gradientDiffusion]\n"
+    "               [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V] [-sieveBottom UM]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
@@ -80,7 +81,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
-        "turbulence", "wakeShare"};
+        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -185,7 +186,21 @@ int predict(const Args& a)
         throw drum::InputError("", "-model", "unknown model '" + model + "': valid names are " + list + "cfd");
     }
     const fs::path matFile = a.get("materials", defaultMaterials().string());
-    const auto materials = drum::readWindTunnelMaterials(matFile);
+    drum::SieveClosure closure;
+    if (a.has("sieveBottom"))
+    {
+        // the lower bound given to the open bottom sieve bin (a stated sensitivity)
+        const std::string text = a.get("sieveBottom");
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !(v >= 1 && v <= 73))
+        {
+            throw drum::InputError("", "-sieveBottom", "'" + text + "' um outside the allowed range [1, 73] "
+                                   "(the open bottom bin lies below the 74 um sieve)");
+        }
+        closure.bottomUm = v;
+    }
+    const auto materials = drum::readWindTunnelMaterials(matFile, closure);
     const auto tests = drum::readWindTunnelTests(testsFile, materials);
     // Sherritt's code and the reference predictions: air at 20 degC, Schiller-Naumann
     const particleDrag::Gas air = particleDrag::Gas::air(20);
@@ -227,6 +242,7 @@ int predict(const Args& a)
         o.particleTurbulence = named("particleTurbulence", {"none", "Simonin", "SimoninCrowe"});
         o.turbulentDispersion = named("turbulentDispersion", {"none", "gradientDiffusion"});
         o.wakeShare = a.get("wakeShare");
+        o.releaseVelocity = a.get("releaseVelocity");
         if (!o.wakeShare.empty() && o.particleTurbulence != "SimoninCrowe")
         {
             throw drum::InputError("", "-wakeShare", "an entry of -particleTurbulence SimoninCrowe only");
