@@ -47,7 +47,7 @@ Description
 #include "gaussConvectionScheme.H"
 #include "upwind.H"
 #include "particleClass.H"
-#include "crossingTrajectories.H"
+#include "turbulentDispersionModel.H"
 
 #include <cmath>
 

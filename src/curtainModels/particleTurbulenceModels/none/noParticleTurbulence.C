@@ -2,7 +2,7 @@
   flightedDryer: OpenFOAM library for falling curtains in flighted dryers
 \*---------------------------------------------------------------------------*/
 
-#include "none.H"
+#include "noParticleTurbulence.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
