@@ -27,7 +27,7 @@ Foam::particleTurbulenceModels::Simonin::Simonin
     particleTurbulenceModel(coeffs, solids, mesh),
     C3eps_(coeff("C3eps", 1.2, 0, 5)),
     Cmu_(coeff("Cmu", 0.09, 0.01, 1)),
-    Cbeta_(coeff("Cbeta", 1.35, 0, 10))
+    Cbeta_(coeff("Cbeta", CsanadyCbeta, 0, 10))
 {
     wordList allowed({"C3eps", "Cmu", "Cbeta"});
     allowed.append(extraEntries);

@@ -21,7 +21,7 @@ Foam::turbulentDispersionModels::gradientDiffusion::gradientDiffusion(const dict
 :
     turbulentDispersionModel(dict),
     sigma_(coeff("sigma", 0.9, 0, 10, true)),
-    Cbeta_(coeff("Cbeta", 1.35, 0, 10, false))
+    Cbeta_(coeff("Cbeta", CsanadyCbeta, 0, 10, false))
 {
     checkEntries(wordList({"sigma", "Cbeta"}));
 }
