@@ -66,6 +66,15 @@ Foam::curtainSolids::curtainSolids(const fvMesh& mesh)
             << " outside the allowed range (0 1)" << exit(FatalIOError);
     }
 
+    // The particle classes: the one reader of particles { name { d; rho; drag; } }
+    // for curtainFoam and the library's function objects and fvOptions
+    if (!curtain->isDict("particles") || curtain->subDict("particles").empty())
+    {
+        FatalIOErrorInFunction(*curtain)
+            << "Sub-dictionary 'particles' missing or empty: give at least one "
+            << "particle class, e.g. particles { sand { d 0.5e-3; rho 2650; } }"
+            << exit(FatalIOError);
+    }
     const dictionary& particles = curtain->subDict("particles");
     const dictionary emptyDict;
     const dictionary& defaultDrag =
@@ -78,9 +87,38 @@ Foam::curtainSolids::curtainSolids(const fvMesh& mesh)
     label i = 0;
     for (const entry& e : particles)
     {
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(particles)
+                << "Entry '" << e.keyword() << "' in 'particles' is not a "
+                << "dictionary { d ..; rho ..; }" << exit(FatalIOError);
+        }
+        if (!e.dict().found("drag") && defaultDrag.empty())
+        {
+            FatalIOErrorInFunction(*curtain)
+                << "No 'drag' dictionary for particle class " << e.keyword()
+                << ": give drag { type SchillerNaumann; } at the top level "
+                << "or in the class" << exit(FatalIOError);
+        }
         names_[i] = e.keyword();
         d_[i] = e.dict().get<scalar>("d");
         rho_[i] = e.dict().get<scalar>("rho");
+        // Sieve sizes of dryer solids: a micron to a few centimetres
+        if (!(d_[i] >= 1e-6 && d_[i] <= 0.05))
+        {
+            FatalIOErrorInFunction(e.dict())
+                << "Particle class " << names_[i] << ": entry 'd' = " << d_[i]
+                << " m outside the allowed range [1e-6, 0.05] m"
+                << exit(FatalIOError);
+        }
+        if (!(rho_[i] > rhoGas_ && rho_[i] < 1e5))
+        {
+            FatalIOErrorInFunction(e.dict())
+                << "Particle class " << names_[i] << ": entry 'rho' = "
+                << rho_[i] << " kg/m3 outside the allowed range ("
+                << rhoGas_ << " (the gas), 1e5) kg/m3"
+                << exit(FatalIOError);
+        }
         drag_.set
         (
             i,

@@ -110,48 +110,28 @@ Foam::particleClass::readField
 
 Foam::particleClass::particleClass
 (
-    const word& name,
-    const dictionary& dict,
-    const dictionary& defaultDrag,
-    const fvMesh& mesh,
-    const dimensionedScalar& rhoGas
+    const curtainSolids& solids,
+    const label i,
+    const fvMesh& mesh
 )
 :
-    name_(name),
-    dict_(dict),
-    dragDict_(dict.found("drag") ? dict.subDict("drag") : defaultDrag),
-    d_("d", dimLength, dict_.get<scalar>("d")),
-    rho_("rho", dimDensity, dict_.get<scalar>("rho")),
+    name_(solids.names()[i]),
+    dragDict_(solids.drag(i)),
+    d_("d", dimLength, solids.d(i)),
+    rho_("rho", dimDensity, solids.rho(i)),
     drag_()
 {
-    // Sieve sizes of dryer solids: a micron to a few centimetres
-    if (!(d_.value() >= 1e-6 && d_.value() <= 0.05))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Particle class " << name_ << ": entry 'd' = " << d_.value()
-            << " m outside the allowed range [1e-6, 0.05] m"
-            << exit(FatalIOError);
-    }
-    if (!(rho_.value() > rhoGas.value() && rho_.value() < 1e5))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Particle class " << name_ << ": entry 'rho' = "
-            << rho_.value() << " kg/m3 outside the allowed range ("
-            << rhoGas.value() << " (the gas), 1e5) kg/m3"
-            << exit(FatalIOError);
-    }
-
     drag_ = particleDragModel::New(dragDict_);
 
-    alpha_.reset(readField<scalar>(mesh, "alpha", name));
-    U_.reset(readField<vector>(mesh, "U", name));
+    alpha_.reset(readField<scalar>(mesh, "alpha", name_));
+    U_.reset(readField<vector>(mesh, "U", name_));
     phi_.reset
     (
         new surfaceScalarField
         (
             IOobject
             (
-                IOobject::groupName("phi", name),
+                IOobject::groupName("phi", name_),
                 mesh.time().timeName(),
                 mesh,
                 IOobject::READ_IF_PRESENT,
@@ -166,7 +146,7 @@ Foam::particleClass::particleClass
         (
             IOobject
             (
-                IOobject::groupName("alphaPhi", name),
+                IOobject::groupName("alphaPhi", name_),
                 mesh.time().timeName(),
                 mesh,
                 IOobject::NO_READ,
