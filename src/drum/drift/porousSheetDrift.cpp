@@ -30,7 +30,7 @@ PorousSheetConstants readPorousSheetConstants(const std::filesystem::path& file)
     if (!std::filesystem::exists(file))
     {
         throw InputError(f, "", "porousSheet constants not found: fit them to a drift table with "
-            "'curtainDrift -fit porousSheet -table TABLE.csv -out " + f + "'");
+            "'windTunnelDrift -fit porousSheet -table TABLE.csv -out " + f + "'");
     }
     const YAML::Node n = loadYamlFile(f);
     if (!n.IsMap() || !n["model"] || n["model"].as<std::string>() != "porousSheet")

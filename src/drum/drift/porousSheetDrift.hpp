@@ -16,7 +16,7 @@
 //     V_c/V_g = (1 + a N)^-b
 // with a [1/m] (an inverse effective sheet thickness: N a is the sheet's loss
 // coefficient along L) and b fitted by least squares on ln(V_c/V_g) of the
-// table (fitPorousSheet, library drumDriftFit; command curtainDrift -fit).
+// table (fitPorousSheet, library drumDriftFit; command windTunnelDrift -fit).
 // The drift is then the shared core's lone-particle fall at V_c.
 // Limits: dilute (S -> 0) V_c -> V_g, the isolated particle; dense (N >> 1/a)
 // V_c/V_g ~ (aN)^-b -> 0, strong shielding.

@@ -13,7 +13,7 @@
 #include <set>
 #include <sstream>
 
-namespace curtainDrift
+namespace windTunnelDrift
 {
 
 namespace fs = std::filesystem;
@@ -135,4 +135,4 @@ void writeScores
     }
 }
 
-} // namespace curtainDrift
+} // namespace windTunnelDrift

@@ -1,4 +1,4 @@
-// curtainDrift end to end: every model on the shared wind-tunnel tests
+// windTunnelDrift end to end: every model on the shared wind-tunnel tests
 // (isolated and Sherritt against the shared reference predictions, tableVc
 // with a uniform V_c/V_g against them too, cfd through a stand-in
 // curtainCase), the score mode against the data README's RMS values, and bad
@@ -27,7 +27,7 @@ const fs::path data = drum::dataDir();
 
 fs::path dir()
 {
-    const fs::path d = fs::temp_directory_path()/("curtainDriftCli_" + std::to_string(::getpid()));
+    const fs::path d = fs::temp_directory_path()/("windTunnelDriftCli_" + std::to_string(::getpid()));
     fs::create_directories(d);
     return d;
 }
@@ -37,7 +37,7 @@ struct CliRun { int rc; std::string out; };
 CliRun run(const std::string& args, const std::string& env = "")
 {
     const fs::path log = dir()/"log.txt";
-    const std::string cmd = "DRYER_DATA=" + data.string() + " " + env + " " + CURTAINDRIFT + std::string(" ") + args + " > " + log.string() + " 2>&1";
+    const std::string cmd = "DRYER_DATA=" + data.string() + " " + env + " " + WINDTUNNELDRIFT + std::string(" ") + args + " > " + log.string() + " 2>&1";
     const int rc = std::system(cmd.c_str());
     std::ifstream in(log);
     std::stringstream ss;
@@ -93,7 +93,7 @@ const std::string tests = (data/"windtunnel_tests.csv").string();
 } // namespace
 
 
-TEST(CurtainDriftCli, IsolatedAndSherrittReproduceTheSharedReferencePredictions)
+TEST(WindTunnelDriftCli, IsolatedAndSherrittReproduceTheSharedReferencePredictions)
 {
     const auto ref = reference();
     for (const char* model : {"isolated", "sherritt"})
@@ -112,7 +112,7 @@ TEST(CurtainDriftCli, IsolatedAndSherrittReproduceTheSharedReferencePredictions)
 }
 
 
-TEST(CurtainDriftCli, TableVcWithUniformRatioIsTheLoneParticleAtThatVelocity)
+TEST(WindTunnelDriftCli, TableVcWithUniformRatioIsTheLoneParticleAtThatVelocity)
 {
     const auto ref = reference();
     const fs::path out = dir()/"tableVc.csv";
@@ -149,7 +149,7 @@ std::map<int, std::string> materialOfTest()
 }
 
 
-TEST(CurtainDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest)
+TEST(WindTunnelDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest)
 {
     const auto mat = materialOfTest();
     const fs::path half = dir()/"half.csv", full = dir()/"full.csv", both = dir()/"both.csv";
@@ -202,7 +202,7 @@ TEST(CurtainDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest)
 }
 
 
-TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
+TEST(WindTunnelDriftCli, ScoresMatchTheDataReadme)
 {
     for (const char* model : {"isolated", "sherritt"})
     {
@@ -246,7 +246,7 @@ TEST(CurtainDriftCli, ScoresMatchTheDataReadme)
 }
 
 
-TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
+TEST(WindTunnelDriftCli, CfdRunsCurtainCasePerRow)
 {
     // Stand-in curtainCase: drift of a class = 1000 d (a function of its arguments)
     const fs::path bin = dir()/"bin";
@@ -339,7 +339,7 @@ TEST(CurtainDriftCli, CfdRunsCurtainCasePerRow)
 }
 
 
-TEST(CurtainDriftCli, BadInputGivesClearErrorsAndNoOutput)
+TEST(WindTunnelDriftCli, BadInputGivesClearErrorsAndNoOutput)
 {
     const fs::path out = dir()/"keep.csv";
     const auto expectFail = [&](const std::string& args, const std::string& needle)

@@ -15,7 +15,7 @@
 #include <sstream>
 #include <sys/wait.h>
 
-namespace curtainDrift
+namespace windTunnelDrift
 {
 
 namespace fs = std::filesystem;
@@ -248,7 +248,7 @@ std::map<int, double> cfdPredictions
             Row& r = rows[k];
             {
                 std::lock_guard<std::mutex> lock(mutex);
-                std::cout << "curtainDrift: cfd test " << t.test << " (" << t.material << ", V_g "
+                std::cout << "windTunnelDrift: cfd test " << t.test << " (" << t.material << ", V_g "
                           << t.airVelocity << " m/s, S " << t.spillRate << " kg/(m s), y " << t.fallHeight
                           << " m) started" << std::endl;
                 fs::remove_all(r.dir);
@@ -278,7 +278,7 @@ std::map<int, double> cfdPredictions
             const double el = std::chrono::duration<double>(clock::now() - start).count();
             const double row = std::chrono::duration<double>(clock::now() - t0).count();
             std::ostringstream msg;
-            msg << "curtainDrift: cfd " << done << "/" << rows.size() << ": test " << t.test << " ";
+            msg << "windTunnelDrift: cfd " << done << "/" << rows.size() << ": test " << t.test << " ";
             if (r.ok)
             {
                 msg << std::fixed << std::setprecision(3) << r.advance << " m in " << std::setprecision(0)
@@ -315,4 +315,4 @@ std::map<int, double> cfdPredictions
     return out;
 }
 
-} // namespace curtainDrift
+} // namespace windTunnelDrift

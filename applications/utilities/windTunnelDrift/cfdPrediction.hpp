@@ -1,8 +1,8 @@
-// The `cfd` model of curtainDrift: one curtainCase run (H6b's curtainFoam
+// The `cfd` model of windTunnelDrift: one curtainCase run (H6b's curtainFoam
 // driver) per test row with the row's conditions and the material's size
 // classes, in a work folder; reads DIR/curtainResult.csv back.
-#ifndef CURTAINDRIFT_CFDPREDICTION_HPP
-#define CURTAINDRIFT_CFDPREDICTION_HPP
+#ifndef WINDTUNNELDRIFT_CFDPREDICTION_HPP
+#define WINDTUNNELDRIFT_CFDPREDICTION_HPP
 
 #include "drum/windTunnel/windTunnelData.hpp"
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace curtainDrift
+namespace windTunnelDrift
 {
 
 struct CfdOptions
@@ -66,6 +66,6 @@ double readCurtainResult
     const std::vector<double>& fractions
 );
 
-} // namespace curtainDrift
+} // namespace windTunnelDrift
 
 #endif

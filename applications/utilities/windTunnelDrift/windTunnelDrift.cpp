@@ -1,6 +1,6 @@
-// curtainDrift: drift models on wind-tunnel style test rows (issue 6).
+// windTunnelDrift: drift models on wind-tunnel style test rows.
 //
-//   curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
+//   windTunnelDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE]
 //                [-table FILE[,FILE...]] [-outside refuse|clamp] [-constants FILE]
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
 //                [-turbulence kEpsilon|realizableKE|kOmegaSST]
@@ -13,9 +13,9 @@
 //                                 the range under refuse - is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
 //       data/windtunnel_tests.csv; the measured advance is never read)
-//   curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
+//   windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table(s)
-//   curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
+//   windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
 //                [-byMaterial FILE.csv]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
 //       (and per material)
@@ -47,14 +47,14 @@ namespace
 
 const char* usage =
     "usage:\n"
-    "  curtainDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
+    "  windTunnelDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
     "               [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V] [-sieveBottom UM]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
-    "  curtainDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
-    "  curtainDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
+    "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
+    "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
 
@@ -208,7 +208,7 @@ int predict(const Args& a)
     std::map<int, double> pred;
     if (model == "cfd")
     {
-        curtainDrift::CfdOptions o;
+        windTunnelDrift::CfdOptions o;
         o.level = a.get("level", "coarse");
         if (o.level != "coarse" && o.level != "medium" && o.level != "fine")
         {
@@ -249,11 +249,11 @@ int predict(const Args& a)
         }
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
-        o.work = a.get("work", (fs::temp_directory_path()/("curtainDrift_" + std::to_string(::getpid()))).string());
-        pred = curtainDrift::cfdPredictions(tests, materials, o);
+        o.work = a.get("work", (fs::temp_directory_path()/("windTunnelDrift_" + std::to_string(::getpid()))).string());
+        pred = windTunnelDrift::cfdPredictions(tests, materials, o);
         if (pred.size() < tests.size())
         {
-            std::cout << "curtainDrift: " << tests.size() - pred.size() << " of " << tests.size()
+            std::cout << "windTunnelDrift: " << tests.size() - pred.size() << " of " << tests.size()
                       << " rows failed and are left out of " << out.string() << "; logs in " << o.work.string() << "\n";
         }
         else if (!o.keep)
@@ -311,13 +311,13 @@ int predict(const Args& a)
                 {
                     throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
                 }
-                std::cout << "curtainDrift: test " << t.test << " left out: " << e.what() << "\n";
+                std::cout << "windTunnelDrift: test " << t.test << " left out: " << e.what() << "\n";
             }
         }
         if (pred.empty()) throw drum::InputError(testsFile.string(), "", "the model answered no row: nothing written");
         if (pred.size() < tests.size())
         {
-            std::cout << "curtainDrift: " << tests.size() - pred.size() << " of " << tests.size()
+            std::cout << "windTunnelDrift: " << tests.size() - pred.size() << " of " << tests.size()
                       << " rows left out (-skipFailed)\n";
         }
         for (const auto& [key, m] : byTable)
@@ -329,7 +329,7 @@ int predict(const Args& a)
             {
                 if (table->clampCount(ax))
                 {
-                    std::cout << "curtainDrift: " << table->clampCount(ax) << " class queries clamped on "
+                    std::cout << "windTunnelDrift: " << table->clampCount(ax) << " class queries clamped on "
                               << drum::driftAxisName(ax) << " (" << table->file().string() << ")\n";
                 }
             }
@@ -341,7 +341,7 @@ int predict(const Args& a)
         if (pred.count(t.test)) table.addRow({double(t.test), pred.at(t.test)});
     }
     table.write(out);
-    std::cout << "curtainDrift: " << table.rows().size() << " predictions (" << model << ") written to " << out.string() << "\n";
+    std::cout << "windTunnelDrift: " << table.rows().size() << " predictions (" << model << ") written to " << out.string() << "\n";
     return 0;
 }
 
@@ -361,9 +361,9 @@ int fit(const Args& a)
     for (const auto& t : tables) ptrs.push_back(&t);
     const particleDrag::Gas air = particleDrag::Gas::air(20);
     drum::PorousSheetFit f = drum::fitPorousSheet(ptrs, air);
-    f.constants.provenance["command"] = "curtainDrift -fit porousSheet -table " + list + " -out " + out.string();
+    f.constants.provenance["command"] = "windTunnelDrift -fit porousSheet -table " + list + " -out " + out.string();
     drum::writePorousSheetConstants(out, f.constants);
-    std::cout << "curtainDrift: porousSheet a = " << f.constants.a << " 1/m, b = " << f.constants.b << " on "
+    std::cout << "windTunnelDrift: porousSheet a = " << f.constants.a << " 1/m, b = " << f.constants.b << " on "
               << f.rows << " table rows, RMS ln residual " << f.rmsLn << (f.converged ? "" : " (NOT converged)")
               << "; written to " << out.string() << "\n";
     return f.converged ? 0 : 2;
@@ -371,7 +371,7 @@ int fit(const Args& a)
 
 int score(const Args& a)
 {
-    std::vector<curtainDrift::NamedPredictions> preds;
+    std::vector<windTunnelDrift::NamedPredictions> preds;
     for (const auto& item : commaList(a.need("predictions"), "-predictions"))
     {
         const auto eq = item.find('=');
@@ -381,7 +381,7 @@ int score(const Args& a)
         }
         preds.push_back({item.substr(0, eq), item.substr(eq + 1)});
     }
-    curtainDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"));
+    windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"));
     return 0;
 }
 
@@ -404,7 +404,7 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-        std::cerr << "curtainDrift: error: " << e.what() << std::endl;
+        std::cerr << "windTunnelDrift: error: " << e.what() << std::endl;
         return 1;
     }
 }

@@ -1,14 +1,14 @@
-// curtainDrift -score: RMS ln(pred/measured), bias and share within +-25 %
+// windTunnelDrift -score: RMS ln(pred/measured), bias and share within +-25 %
 // per model, per fall height and overall (drum::scorePredictions), as CSV
 // and a predicted-against-measured PNG.
-#ifndef CURTAINDRIFT_DRIFTSCORES_HPP
-#define CURTAINDRIFT_DRIFTSCORES_HPP
+#ifndef WINDTUNNELDRIFT_DRIFTSCORES_HPP
+#define WINDTUNNELDRIFT_DRIFTSCORES_HPP
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace curtainDrift
+namespace windTunnelDrift
 {
 
 struct NamedPredictions
@@ -29,6 +29,6 @@ void writeScores
     const std::filesystem::path& byMaterial = {}
 );
 
-} // namespace curtainDrift
+} // namespace windTunnelDrift
 
 #endif
