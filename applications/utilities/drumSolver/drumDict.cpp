@@ -1,4 +1,5 @@
 #include "drumDict.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
@@ -131,7 +132,6 @@ drum::SherrittFlightSpec readSherrittFlight
     bool interior
 )
 {
-    constexpr double deg = 3.14159265358979323846/180;
     drum::SherrittFlightSpec s;
     s.type = drum::parseSherrittFlightType(
         r.word(n, sec, "type", {"twoSided", "EAD", "CBD", "table"}), sec + ".type", r.file);
@@ -143,8 +143,8 @@ drum::SherrittFlightSpec readSherrittFlight
         case drum::SherrittFlightType::twoSided:
             s.baseLength = r.number(n, sec, "baseLength", 0, D/2, {}, true);
             s.tipLength = r.number(n, sec, "tipLength", 0, D/2, 0.0);
-            s.tipAngle = r.number(n, sec, "tipAngle_deg", 60, 180, 90.0)*deg;
-            s.baseAngle = r.number(n, sec, "baseAngle_deg", 30, 150, 90.0)*deg;
+            s.tipAngle = r.number(n, sec, "tipAngle_deg", 60, 180, 90.0)*drum::deg;
+            s.baseAngle = r.number(n, sec, "baseAngle_deg", 30, 150, 90.0)*drum::deg;
             keys.insert(keys.end(), {"baseLength", "tipLength", "tipAngle_deg", "baseAngle_deg"});
             break;
         case drum::SherrittFlightType::ead:
@@ -152,7 +152,7 @@ drum::SherrittFlightSpec readSherrittFlight
         {
             const bool cbd = s.type == drum::SherrittFlightType::cbd;
             s.radius = r.number(n, sec, "radius", 0, D/4, {}, true);
-            s.designRepose = r.number(n, sec, "designRepose_deg", 0, 90, phiDefaultDeg, true)*deg;
+            s.designRepose = r.number(n, sec, "designRepose_deg", 0, 90, phiDefaultDeg, true)*drum::deg;
             s.tipDiameter = cbd ? r.number(n, sec, "tipDiameter", 0, D, {}, true)
                                 : r.number(n, sec, "tipDiameter", 0, D, 0.0);
             if (cbd)
@@ -177,7 +177,7 @@ drum::SherrittFlightSpec readSherrittFlight
             for (std::size_t i = 0; i < a.size(); ++i)
             {
                 const std::string at = "[" + std::to_string(i) + "]";
-                s.angles.push_back(drum::yamlNumber(a[i], sec + ".angles_deg" + at, r.file)*deg);
+                s.angles.push_back(drum::yamlNumber(a[i], sec + ".angles_deg" + at, r.file)*drum::deg);
                 s.lengths.push_back(drum::yamlNumber(l[i], sec + ".lengths" + at, r.file));
             }
             keys.insert(keys.end(), {"tipDiameter", "angles_deg", "lengths"});

@@ -13,6 +13,7 @@
 // Writes DIR/results/{summary,rtd,profile}.csv (+ estimation.csv, classes.csv) and PNGs,
 // each file whole or not at all.
 #include "drumDict.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/drift/driftModel.hpp"
 #include "drum/flights/sherrittFlightShapes.hpp"
@@ -46,7 +47,6 @@ using namespace drumSolver;
 namespace
 {
 
-constexpr double pi = 3.14159265358979323846;
 const double nan = std::numeric_limits<double>::quiet_NaN();
 
 void say(const std::string& s)
@@ -231,7 +231,7 @@ void runCompartmentWith
         drum::FlightModelPartition fp;
         fp.drift = drum::makeDriftModel(d.driftSettings, air, {}, "model.drift");
         // Mean gas velocity over the free cross-section (holdup neglected)
-        fp.gasVelocity = d.gasMassRate/(air.density*pi*d.diameter*d.diameter/4);
+        fp.gasVelocity = d.gasMassRate/(air.density*drum::pi*d.diameter*d.diameter/4);
         fp.counterCurrent = d.counterCurrent;
         for (double s : d.sizes) fp.sizes.push_back(s*d.sphericity);
         fp.fractions = d.fractions;
@@ -478,10 +478,10 @@ drum::TwoPhaseCase twoPhaseCase(const DrumDict& d)
     c.name = d.path.string();
     c.drum.shellDiameter = d.diameter;
     c.drum.length = d.length;
-    c.drum.slope = d.slopeDeg*pi/180;
+    c.drum.slope = d.slopeDeg*drum::pi/180;
     c.drum.speed = d.speedRpm/60;
     c.drum.centrefillDiameter = d.centrefillDiameter;
-    const double step = d.flightTableStepDeg*pi/180;
+    const double step = d.flightTableStepDeg*drum::pi/180;
     if (d.exteriorFlight)
     {
         say("tabulating the " + drum::toString(d.exteriorFlight->type) + " exterior flight (Sherritt's horizontal-length table)");
@@ -500,14 +500,14 @@ drum::TwoPhaseCase twoPhaseCase(const DrumDict& d)
         f.count = d.flightCount;
         f.baseLength = d.baseLength;
         f.tipLength = d.tipLength;
-        f.tipAngle = d.tipAngleDeg*pi/180;
-        f.baseAngle = d.baseAngleDeg*pi/180;
+        f.tipAngle = d.tipAngleDeg*drum::pi/180;
+        f.baseAngle = d.baseAngleDeg*drum::pi/180;
         c.exterior = drum::buildSherrittFlight(f, drum::FlightSide::exterior, d.diameter, d.flightAxialLength,
             step, d.path.string());
     }
     c.material.particleDensity = d.particleDensity;
     c.material.bulkDensity = d.bulkDensity;
-    c.material.repose = *d.reposeDeg*pi/180;
+    c.material.repose = *d.reposeDeg*drum::pi/180;
     c.material.sphericity = d.sphericity;
     c.material.sieveSizes = d.sizes;
     c.material.massFractions = d.fractions;
@@ -534,7 +534,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     drum::AxialOptions ax;
     if (d.dischargeEndAngleDeg)
     {
-        ax.dischargeEndAngle = *d.dischargeEndAngleDeg*pi/180;
+        ax.dischargeEndAngle = *d.dischargeEndAngleDeg*drum::pi/180;
     }
     const drum::TwoPhaseResult r = model.solveAxial(d.feedRate, ax);
     if (const std::string note = c.options.drift->summary(); !note.empty())
@@ -555,9 +555,9 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
     drum::CsvTable sweepTable({"theta_i_deg", "regime", "valid", "feed_kg_s", "holdup_kg", "airborne_kg",
         "discharging_kg", "nondischarging_kg", "airborne_holdup_fraction", "airborne_flow_fraction"});
     const double kgPerM = d.bulkDensity*d.length;
-    for (double t = std::ceil(model.minDischargeAngle()*180/pi); t <= model.finalDischargeAngle()*180/pi + 1e-9; t += 1)
+    for (double t = std::ceil(model.minDischargeAngle()*180/drum::pi); t <= model.finalDischargeAngle()*180/drum::pi + 1e-9; t += 1)
     {
-        const drum::TwoPhaseState st = model.atDischargeAngle(t*pi/180);
+        const drum::TwoPhaseState st = model.atDischargeAngle(t*drum::pi/180);
         sweepTable.addRow({t, double(static_cast<int>(st.regime)), st.valid ? 1.0 : 0.0,
             st.valid ? st.feedRate : nan, st.holdup*kgPerM, st.airborneHoldup*kgPerM,
             st.dischargingHoldup*kgPerM, st.nonDischargingHoldup*kgPerM, st.airborneHoldup/st.holdup,
@@ -573,9 +573,9 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
            << (roots.size() > 1 ? "s" : "") << " for " << d.feedRate << " kg/s:";
         for (const auto& q : roots)
         {
-            os << " theta_i " << q.dischargeAngle*180/pi << " deg (" << drum::loadingRegimeName(q.regime)
+            os << " theta_i " << q.dischargeAngle*180/drum::pi << " deg (" << drum::loadingRegimeName(q.regime)
                << ", " << q.holdup_kg << " kg, airborne " << 100*q.airborne_fraction << " %);";
-            rootTable.addRow({q.dischargeAngle*180/pi, double(static_cast<int>(q.regime)), q.holdup_kg,
+            rootTable.addRow({q.dischargeAngle*180/drum::pi, double(static_cast<int>(q.regime)), q.holdup_kg,
                 q.airborne_fraction, q.meanResidenceTime, q.airborneFlow, q.denseFlow});
         }
         say(os.str());
@@ -682,7 +682,7 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
         "numerical_dispersion_m2_s", "capped_slope_length_m"};
     std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime,
         sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/d.feedRate, sm.mean,
-        r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
+        r.airborneFlow, r.denseFlow, r.dischargeAngle*180/drum::pi, double(net.slices), to.denseDispersion,
         net.numericalDenseDispersion, r.cappedLength};
     const std::optional<drum::RtdMoments> mm = writeSummary(cols, row, measured, out);
 
@@ -698,9 +698,9 @@ void runTwoPhase(const DrumDict& d, const fs::path& out)
         "airborne_flow_kg_s", "dense_flow_kg_s", "bed_slope_deg"});
     for (auto it = r.profile.rbegin(); it != r.profile.rend(); ++it)
     {
-        prof.addRow({d.length - it->distanceFromDischarge, it->dischargeAngle*180/pi,
+        prof.addRow({d.length - it->distanceFromDischarge, it->dischargeAngle*180/drum::pi,
             it->holdup*d.bulkDensity, it->airborneHoldup*d.bulkDensity,
-            it->airborneFlow, it->denseFlow, it->bedSlope*180/pi});
+            it->airborneFlow, it->denseFlow, it->bedSlope*180/drum::pi});
     }
     prof.write(out/"profile.csv");
     sweepTable.write(out/"sweep.csv");

@@ -1,4 +1,5 @@
 #include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 
@@ -11,7 +12,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 
 using Vec = Eigen::Vector2d;
 

@@ -1,4 +1,5 @@
 #include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 
@@ -11,7 +12,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 
 // int_0^w (l0 + (l - l0) u/w)^2 du for a linear l from l0 to l over width w
 double segL2(double l0, double l, double w)

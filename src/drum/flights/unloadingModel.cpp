@@ -1,4 +1,5 @@
 #include "drum/flights/unloadingModel.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 
@@ -9,8 +10,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180.0;
 } // namespace
 
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include "drum/numerics/constants.hpp"
 
 namespace drum
 {
@@ -16,7 +17,6 @@ double UnloadingModel::integrate(F&& f, double aDeg, double bDeg) const
         0.6794095682990244, 0.8650633666889845, 0.9739065285171717};
     static constexpr std::array<double, 5> w{0.2955242247147529, 0.2692667193099963,
         0.2190863625159820, 0.1494513491505806, 0.0666713443086881};
-    constexpr double deg = 3.14159265358979323846/180.0;
     if (!(bDeg > aDeg))
     {
         return 0.0;

@@ -1,4 +1,5 @@
 #include "drum/transport/axialDispersion.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
@@ -11,7 +12,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 constexpr double g = 9.81;
 } // namespace
 

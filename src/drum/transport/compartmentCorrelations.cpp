@@ -1,4 +1,5 @@
 #include "drum/transport/compartmentCorrelations.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 
@@ -9,7 +10,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
 }
 
 double LeeFlightGeometry::tipRadius() const

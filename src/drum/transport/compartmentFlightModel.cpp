@@ -1,4 +1,5 @@
 #include "drum/transport/compartmentFlightModel.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/inputError.hpp"
@@ -28,7 +29,6 @@ std::vector<LeeSliceData> flightModelSliceData
     {
         throw InputError("", "material.sizes_um", "one mass fraction per size class needed");
     }
-    const double deg = 3.14159265358979323846/180.0;
     const double dL = d.length/n;
     const double theta = d.slopeDeg*deg;
     const double omegaDeg = d.rpm*6.0;      // deg/s

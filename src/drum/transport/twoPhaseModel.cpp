@@ -1,4 +1,5 @@
 #include "drum/transport/twoPhaseModel.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
@@ -14,8 +15,6 @@ namespace drum
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
 
 // Composite 4-point Gauss-Legendre over [a, b], panels split at the given
 // breakpoints and no wider than hmax

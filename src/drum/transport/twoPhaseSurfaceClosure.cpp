@@ -1,11 +1,11 @@
 #include "drum/transport/twoPhaseSurfaceClosure.hpp"
+#include "drum/numerics/constants.hpp"
 
 namespace drum
 {
 
 SlopedSurfaces sherrittSurfaceClosure(const SurfaceClosureInput& in)
 {
-    constexpr double pi = 3.14159265358979323846;
     SlopedSurfaces out;
     out.chord = in.surfaceAtDischarge;  // Eq 77: c = l_ex(theta_i)
     const double N = in.exteriorCount;

@@ -6,6 +6,7 @@
 #include "drum/transport/compartmentDispersion.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdMoments.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "mixedSlices.hpp"
 
@@ -18,7 +19,7 @@ using namespace drum;
 namespace
 {
 
-constexpr double pi = 3.14159265358979323846;
+using drum::pi;
 
 using drumTest::mixedSlices;
 

@@ -3,6 +3,7 @@
 #include "drum/flights/sherrittFlightProfile.hpp"
 #include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,8 @@ using namespace drum;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
+using drum::pi;
+using drum::deg;
 
 // A flight whose horizontal length falls linearly from 0.2 m at 60 deg to 0
 // at 300 deg (a hand-checkable triangle)

@@ -3,6 +3,7 @@
 #include "drum/flights/sherrittFlightShapes.hpp"
 #include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +13,8 @@ using namespace drum;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
+using drum::pi;
+using drum::deg;
 
 Eigen::Vector2d world(const Eigen::Vector2d& p, double theta)
 {

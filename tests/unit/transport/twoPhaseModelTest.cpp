@@ -5,6 +5,7 @@
 #include "drum/io/inputError.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
 #include "sheikhTestCase.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +16,8 @@ using namespace drum;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
+using drum::pi;
+using drum::deg;
 
 // A flight with l = r on the whole discharging arc at phi: the table is
 // constant r from pi - phi to 2 pi - phi and 0 elsewhere (unit-radius EAD

@@ -8,6 +8,7 @@
 #include "drum/transport/twoPhaseModel.hpp"
 #include "drum/transport/twoPhaseTracer.hpp"
 #include "sheikhTestCase.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +18,8 @@ using namespace drum;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
+using drum::pi;
+using drum::deg;
 
 TwoPhaseCase sheikhCase(double slope = 1*deg)
 {

@@ -62,6 +62,7 @@
 #include "drum/flights/sherrittFlightShapes.hpp"
 #include "drum/flights/sherrittFlightSurface.hpp"
 #include "drum/flights/unloadingModel.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -75,8 +76,8 @@ using namespace drum;
 namespace
 {
 
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180.0;
+using drum::pi;
+using drum::deg;
 
 struct Case
 {

@@ -4,6 +4,7 @@
 // builds them from cases/sherrittDrums/*/drumDict (drum::buildSherrittFlight).
 #include "drum/flights/sherrittFlightSpec.hpp"
 #include "drum/transport/twoPhaseModel.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,8 +14,8 @@ using namespace drum;
 
 namespace
 {
-constexpr double pi = 3.14159265358979323846;
-constexpr double deg = pi/180;
+using drum::pi;
+using drum::deg;
 } // namespace
 
 TEST(SherrittDrums, SheikhTwelve90DegFlightsAirborneShares)
