@@ -23,7 +23,7 @@
 #include "drum/io/gnuplot.hpp"
 #include "drum/io/resultsFolder.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/rtd/rtdEstimation.hpp"
+#include "drum/transport/compartmentLeeEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/compartmentDispersion.hpp"

@@ -11,7 +11,6 @@
 #ifndef DRUM_RTD_RTDESTIMATION_HPP
 #define DRUM_RTD_RTDESTIMATION_HPP
 
-#include "drum/transport/compartmentLeeDryer.hpp"
 
 #include <Eigen/Dense>
 #include <functional>
@@ -81,24 +80,6 @@ std::vector<FitResult> multiStartFit
 //- Two-sided Student-t quantile t_{1 - alpha/2, dof} (Hill 1970 expansion)
 double studentTQuantile(double alpha, int dof);
 
-//- Largest C_F^0 = maf_h sin(theta)/(L/N) over the slices (Eq 3.7)
-double leeMaxForwardFraction0(const LeeDryer& dryer, int nSlices);
-
-//- Lee parameters from named values. "forwardShare" s in [0, 1] stands for
-//  C_F^G = s (1 - C_B)/max_i C_F^0_i, which keeps C_R = 1 - C_F - C_B >= 0
-//  in every slice: Lee's fits end on that constraint (Lee 2008 Table 7.2), where
-//  a box-bounded optimiser in (t_kiln, C_B, C_F^G) stalls.
-//  "designLoadMultiplier" goes into *modified when given.
-LeeParameters leeParametersFrom
-(
-    const LeeDryer& dryer,
-    int nSlices,
-    const LeeParameters& base,
-    const std::vector<std::string>& names,
-    const std::vector<double>& values,
-    LeeDryer* modified = nullptr
-);
-
 //- How model and data are compared
 struct RtdObjective
 {
@@ -110,32 +91,6 @@ struct RtdObjective
 
 //- Measured E (1/h) as the objective compares it
 std::vector<double> transformForObjective(const std::vector<double>& E, const RtdObjective& objective);
-
-//- Lee's dryer as a prediction model: E(t) in 1/h at `times` (s after the
-//  pulse start) for a rectangular pulse, with the named free parameters
-//  taken from the vector: "kilnTime", "backFraction", "dragFactor",
-//  "forwardShare", "designLoadMultiplier", and for the stagnant-zone
-//  extension "stagnantRatio", "exchangeTime". Others come from `base` and
-//  `stagnant`. The output is transformed as the objective says.
-PredictionModel leeRtdModel
-(
-    const LeeDryer& dryer,
-    int nSlices,
-    const LeeParameters& base,
-    const std::vector<std::string>& freeParameters,
-    double pulseDuration,
-    const std::vector<double>& times,
-    const StagnantExchange& stagnant = {},
-    const RtdObjective& objective = {}
-);
-
-//- Stagnant-zone values from named values (defaults from `base`)
-StagnantExchange stagnantFrom
-(
-    const StagnantExchange& base,
-    const std::vector<std::string>& names,
-    const std::vector<double>& values
-);
 
 } // namespace drum
 
