@@ -6,7 +6,7 @@
 namespace particleDrag
 {
 
-double sherrittSheetVelocityRatio(double y, double spill, double L)
+double sherrittSheetVelocityRatio(double y, double spill, double L, const SheetVelocityConstants& e)
 {
     // Sherritt 1991 Eq 142, code exponents and cap (sheetgasvel())
     if (y <= 0 || spill <= 0 || L <= 0)
@@ -14,7 +14,7 @@ double sherrittSheetVelocityRatio(double y, double spill, double L)
         return 1.0;
     }
     const double ratio =
-        1.546*std::pow(y, 0.763)/std::pow(spill, 0.857)/std::pow(L, 0.437);
+        e.k*std::pow(y, e.a)/std::pow(spill, e.b)/std::pow(L, e.c);
     return std::min(1.0, ratio);
 }
 

@@ -8,6 +8,7 @@
 //                [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V]
 //                                     (cfd: curtainCase's options)
 //                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
+//                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
@@ -34,10 +35,12 @@
 #include "drum/windTunnel/windTunnelData.hpp"
 #include "drum/windTunnel/windTunnelPrediction.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -52,6 +55,7 @@ const char* usage =
     "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
     "               [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V] [-sieveBottom UM]\n"
+    "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
@@ -76,12 +80,41 @@ struct Args
     }
 };
 
+//- -sheetConstants k,a,b,c: Eq 142 refitted (model sherritt only)
+particleDrag::SheetVelocityConstants sheetConstants(const Args& a)
+{
+    const std::string text = a.get("sheetConstants");
+    std::vector<double> v;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ','))
+    {
+        char* end = nullptr;
+        const double x = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(x))
+        {
+            throw drum::InputError("", "-sheetConstants", "'" + text + "': four numbers k,a,b,c (Eq 142)");
+        }
+        v.push_back(x);
+    }
+    if (v.size() != 4 || !(v[0] > 0))
+    {
+        throw drum::InputError("", "-sheetConstants", "'" + text + "': four numbers k,a,b,c with k > 0 (Eq 142)");
+    }
+    particleDrag::SheetVelocityConstants c;
+    c.k = v[0];
+    c.a = v[1];
+    c.b = v[2];
+    c.c = v[3];
+    return c;
+}
+
 Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
-        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom"};
+        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom", "sheetConstants"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -290,7 +323,12 @@ int predict(const Args& a)
             if (usesTable && it == tableFor.end()) continue;   // no table serves it: its rows are refused below
             // porousSheet and auto (its dilute test) use the material's curtain diameter
             const std::string key = model == "porousSheet" || model == "auto" ? name : s.table.string();
-            if (!byTable.count(key)) byTable[key] = drum::makeDriftModel(s, air, {}, "-model");
+            if (!byTable.count(key))
+            {
+                byTable[key] = model == "sherritt" && a.has("sheetConstants")
+                    ? std::make_shared<const drum::SherrittSheetDrift>(air, particleDrag::DragLaw{}, sheetConstants(a))
+                    : drum::makeDriftModel(s, air, {}, "-model");
+            }
             models[name] = byTable.at(key);
         }
         for (const auto& t : tests)

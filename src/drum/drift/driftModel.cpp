@@ -53,7 +53,8 @@ double SherrittSheetDrift::displacement(const DriftQuery& q) const
 {
     check(q);
     // Eq 142 (code exponents 0.763/0.857/0.437, capped at 1): V_c = C_V V_g
-    const double cv = particleDrag::sherrittSheetVelocityRatio(q.fallHeight, q.spillRate, q.flightLength);
+    const double cv = particleDrag::sherrittSheetVelocityRatio(q.fallHeight, q.spillRate, q.flightLength,
+                                                               constants_);
     DriftQuery inSheet = q;
     inSheet.gasVelocity = cv*q.gasVelocity;
     return IsolatedParticleDrift::displacement(inSheet);

@@ -11,6 +11,7 @@
 
 #include "particleDrag/dragLaw.hpp"
 #include "particleDrag/gasProperties.hpp"
+#include "particleDrag/sheetVelocity.hpp"
 
 #include <memory>
 #include <string>
@@ -67,8 +68,24 @@ class SherrittSheetDrift : public IsolatedParticleDrift
 {
 public:
     using IsolatedParticleDrift::IsolatedParticleDrift;
+
+    //- With Eq 142's constants refitted (windTunnelDrift -sheetConstants)
+    SherrittSheetDrift
+    (
+        particleDrag::Gas gas,
+        particleDrag::DragLaw law,
+        particleDrag::SheetVelocityConstants constants
+    )
+    :
+        IsolatedParticleDrift(gas, law),
+        constants_(constants)
+    {}
+
     double displacement(const DriftQuery& q) const override;
     std::string name() const override { return "sherritt"; }
+
+private:
+    particleDrag::SheetVelocityConstants constants_;
 };
 
 //- By name with the default table, policy (refuse) and constants files:
