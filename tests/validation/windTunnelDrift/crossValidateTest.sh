@@ -30,6 +30,27 @@ near "$(get A all all)" 0.0953 "A in sample"
 awk -F, '$1=="A" && $3=="all" {exit !($2=="in")} ' "$br" || fail "a candidate is not labelled in-sample"
 awk -F, '$1=="cv_height" && $3=="all" {exit !($2=="out")} ' "$br" || fail "the choice is not labelled out-of-sample"
 [ -s "$work/r/crossValidation.png" ] && [ -s "$work/r/predictions/cv_height.csv" ] || fail "png or predictions missing"
+# Eq 142 refitted leaving one material out: three different fits, each
+# fold's constants reproduce its held-out predictions through windTunnelDrift
+tool="$(cd "$(dirname "$script")/../../.." && pwd)/platforms/bin/windTunnelDrift"
+DRYER_DATA="$data" "$script" -candidates A,B -results "$work/r" -out "$work/e" -eq142 > "$work/log.e" 2>&1 \
+    || { cat "$work/log.e"; fail "crossValidate -eq142 exit $?"; }
+[ "$(grep -c '^eq142_material,' "$work/e/crossValidation.csv")" = 3 ] || fail "not three eq142 folds"
+[ "$(grep '^eq142_material,' "$work/e/crossValidation.csv" | cut -d, -f3 | sort -u | wc -l)" = 3 ] \
+    || fail "the three folds did not fit three different sets of constants"
+awk -F, '$1=="eq142_material" && $3=="all" {exit !($2=="out" && $5==69)}' "$work/e/scoresBreakdown.csv" \
+    || fail "eq142_material not scored out of sample on 69 rows"
+held=$(grep '^eq142_material,sand,' "$work/e/crossValidation.csv")
+set -- $(echo "$held" | cut -d, -f3 | tr ' ' '\n' | sed 's/^.=//')
+awk -F, 'NR==1 || $2=="sand"' "$data/windtunnel_tests.csv" > "$work/sand.csv"
+"$tool" -tests "$work/sand.csv" -out "$work/sand.pred" -model sherritt -sheetConstants "$1,$2,$3,$4" > /dev/null \
+    || fail "windTunnelDrift with the sand fold's constants"
+tail -n +2 "$work/sand.pred" | while IFS=, read -r t a; do
+    grep -q "^$t," "$work/e/predictions/eq142_material.csv" || fail "test $t missing"
+    b=$(grep "^$t," "$work/e/predictions/eq142_material.csv" | cut -d, -f2)
+    awk -v a="$a" -v b="$b" 'BEGIN{exit !((a-b)^2 <= (1e-6*a)^2)}' || fail "test $t: $b, expected $a"
+done || exit 1
+
 # bad input
 sed 's/^11,.*/11,-1/' "$work/r/predictions/A.csv" > "$work/r/predictions/C.csv"
 mkdir -p "$work/bad"
