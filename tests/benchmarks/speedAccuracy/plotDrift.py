@@ -121,7 +121,7 @@ for r in table:
         ax[0].annotate(f"{r['model']} (n={r['rows']})", (r["cpu_s_per_prediction"], r["rms_ln"]),
                        fontsize=8, xytext=(4, 3), textcoords="offset points")
 ax[0].set_xscale("log")
-ax[0].set_xlabel("time per prediction [s] (this machine)")
+ax[0].set_xlabel("wall time per prediction [s] (2 cores; CFD rows 2 at a time)")
 ax[0].set_ylabel("RMS ln(predicted/measured advance)")
 ax[0].set_title("(a) drift models on Sherritt's shared wind-tunnel tests", fontsize=10)
 ax[0].grid(True, which="both", alpha=0.3)
