@@ -68,16 +68,6 @@ Foam::particleTurbulenceModels::Simonin::sinkRate() const
 }
 
 
-Foam::tmp<Foam::volScalarField>
-Foam::particleTurbulenceModels::Simonin::production() const
-{
-    return volScalarField::New
-    (
-        "particleTurbulence:production", mesh_, dimensionedScalar(dimVelocity*dimVelocity/dimTime, Zero)
-    );
-}
-
-
 Foam::string Foam::particleTurbulenceModels::Simonin::summary() const
 {
     OStringStream os;

@@ -35,12 +35,3 @@ Foam::tmp<Foam::volScalarField> Foam::particleTurbulenceModels::none::sinkRate()
         "particleTurbulence:sinkRate", mesh_, dimensionedScalar(dimless/dimTime, Zero)
     );
 }
-
-
-Foam::tmp<Foam::volScalarField> Foam::particleTurbulenceModels::none::production() const
-{
-    return volScalarField::New
-    (
-        "particleTurbulence:production", mesh_, dimensionedScalar(dimVelocity*dimVelocity/dimTime, Zero)
-    );
-}

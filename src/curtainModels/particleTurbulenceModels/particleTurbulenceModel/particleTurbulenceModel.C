@@ -93,3 +93,12 @@ Foam::tmp<Foam::volScalarField> Foam::particleTurbulenceModel::epsilon() const
         << exit(FatalError);
     return nullptr;
 }
+
+
+Foam::tmp<Foam::volScalarField> Foam::particleTurbulenceModel::production() const
+{
+    return volScalarField::New
+    (
+        "particleTurbulence:production", mesh_, dimensionedScalar(dimVelocity*dimVelocity/dimTime, Zero)
+    );
+}
