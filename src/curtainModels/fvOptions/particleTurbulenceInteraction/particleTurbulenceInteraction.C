@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTurbulenceInteraction.H"
+#include "refuseUnknownEntries.H"
 #include "fvMatrices.H"
 #include "fvmSup.H"
 #include "volFields.H"
@@ -21,16 +22,12 @@ namespace fv
 void Foam::fv::particleTurbulenceInteraction::readModel(const dictionary& dict)
 {
     const word model(dict.get<word>("model"));
-    const wordList allowed({"type", "active", "timeStart", "duration", "model", model + "Coeffs"});
-    for (const word& key : dict.toc())
-    {
-        if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown entry '" << key << "' of fvOption " << name_
-                << "; allowed entries: " << allowed << exit(FatalIOError);
-        }
-    }
+    refuseUnknownEntries
+    (
+        dict,
+        wordList({"type", "active", "timeStart", "duration", "model", model + "Coeffs"}),
+        "of fvOption " + name_
+    );
     model_ = particleTurbulenceModel::New(dict, solids_, mesh_);
 
     const word& gas = solids_.gasName();

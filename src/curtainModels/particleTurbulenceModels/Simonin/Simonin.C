@@ -39,7 +39,8 @@ Foam::tmp<Foam::volScalarField>
 Foam::particleTurbulenceModels::Simonin::sinkRate() const
 {
     const volScalarField& kg = k();
-    const volScalarField eps(epsilon());
+    const tmp<volScalarField> teps(epsilon());   // the gas field itself under k-epsilon
+    const volScalarField& eps = teps();
     const volVectorField& Ug = Ugas();
 
     const dimensionedScalar epsSmall("epsSmall", eps.dimensions(), SMALL);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleTurbulenceModel.H"
+#include "refuseUnknownEntries.H"
 
 namespace Foam
 {
@@ -26,15 +27,7 @@ Foam::particleTurbulenceModel::particleTurbulenceModel
 
 void Foam::particleTurbulenceModel::checkEntries(const wordList& allowed) const
 {
-    for (const word& key : coeffs_.toc())
-    {
-        if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(coeffs_)
-                << "Unknown entry '" << key << "' in " << coeffs_.name()
-                << "; allowed entries: " << allowed << exit(FatalIOError);
-        }
-    }
+    refuseUnknownEntries(coeffs_, allowed, "in " + coeffs_.name());
 }
 
 
@@ -76,7 +69,7 @@ Foam::tmp<Foam::volScalarField> Foam::particleTurbulenceModel::epsilon() const
     const word omegaName(IOobject::groupName("omega", solids_.gasName()));
     if (mesh_.foundObject<volScalarField>(epsName))
     {
-        return tmp<volScalarField>::New(mesh_.lookupObject<volScalarField>(epsName));
+        return tmp<volScalarField>(mesh_.lookupObject<volScalarField>(epsName));
     }
     if (mesh_.foundObject<volScalarField>(omegaName))
     {

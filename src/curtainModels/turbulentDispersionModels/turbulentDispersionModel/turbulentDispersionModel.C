@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "turbulentDispersionModel.H"
+#include "refuseUnknownEntries.H"
 
 namespace Foam
 {
@@ -19,16 +20,10 @@ Foam::turbulentDispersionModel::turbulentDispersionModel(const dictionary& dict)
 
 void Foam::turbulentDispersionModel::checkEntries(const wordList& allowed) const
 {
-    for (const word& key : dict_.toc())
-    {
-        if (key != "type" && !allowed.found(key))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Unknown entry '" << key << "' of turbulentDispersion (type "
-                << dict_.get<word>("type") << "); allowed entries: type " << allowed
-                << exit(FatalIOError);
-        }
-    }
+    refuseUnknownEntries
+    (
+        dict_, allowed, "of turbulentDispersion (type " + dict_.get<word>("type") + ")", "type"
+    );
 }
 
 
