@@ -39,6 +39,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -80,6 +81,16 @@ struct Args
     }
 };
 
+//- The number a whole option value (or list item) spells; empty if it is
+//  not one finite number
+std::optional<double> numberText(const std::string& text)
+{
+    char* end = nullptr;
+    const double x = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(x)) return std::nullopt;
+    return x;
+}
+
 //- -sheetConstants k,a,b,c: Eq 142 refitted (model sherritt only)
 particleDrag::SheetVelocityConstants sheetConstants(const Args& a)
 {
@@ -89,13 +100,12 @@ particleDrag::SheetVelocityConstants sheetConstants(const Args& a)
     std::string item;
     while (std::getline(ss, item, ','))
     {
-        char* end = nullptr;
-        const double x = std::strtod(item.c_str(), &end);
-        if (item.empty() || *end != '\0' || !std::isfinite(x))
+        const auto x = numberText(item);
+        if (!x)
         {
             throw drum::InputError("", "-sheetConstants", "'" + text + "': four numbers k,a,b,c (Eq 142)");
         }
-        v.push_back(x);
+        v.push_back(*x);
     }
     if (v.size() != 4 || !(v[0] > 0))
     {
@@ -224,14 +234,13 @@ int predict(const Args& a)
     {
         // the lower bound given to the open bottom sieve bin (a stated sensitivity)
         const std::string text = a.get("sieveBottom");
-        char* end = nullptr;
-        const double v = std::strtod(text.c_str(), &end);
-        if (text.empty() || *end != '\0' || !(v >= 1 && v <= 73))
+        const auto v = numberText(text);
+        if (!v || !(*v >= 1 && *v <= 73))
         {
             throw drum::InputError("", "-sieveBottom", "'" + text + "' um outside the allowed range [1, 73] "
                                    "(the open bottom bin lies below the 74 um sieve)");
         }
-        closure.bottomUm = v;
+        closure.bottomUm = *v;
     }
     const auto materials = drum::readWindTunnelMaterials(matFile, closure);
     const auto tests = drum::readWindTunnelTests(testsFile, materials);
