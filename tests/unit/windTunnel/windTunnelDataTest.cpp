@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <unistd.h>
 
 using namespace drum;
 namespace fs = std::filesystem;
@@ -19,18 +20,21 @@ namespace
 {
 
 
-// A scratch file with the given text, removed at scope exit
+// A scratch file with the given text, removed at scope exit; named by the
+// process and a counter (CTest runs each test in its own process, two at a
+// time: an unseeded rand() gave both the same name)
 struct TempCsv
 {
     fs::path path;
     explicit TempCsv(const std::string& text)
     :
         path(fs::temp_directory_path()
-           / ("windTunnelTest_" + std::to_string(std::rand()) + ".csv"))
+           / ("windTunnelTest_" + std::to_string(::getpid()) + "_" + std::to_string(next()) + ".csv"))
     {
         std::ofstream(path) << text;
     }
     ~TempCsv() { fs::remove(path); }
+    static int next() { static int n = 0; return ++n; }
 };
 
 std::string expectInputError(const std::function<void()>& f)
