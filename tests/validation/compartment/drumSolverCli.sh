@@ -32,7 +32,7 @@ bad() {  # bad <sed expression> <expected text in the error>
 # partition flightModel (Lee's geometric flights + Sherritt drift)
 mkdir -p "$work/flightModel"
 sed -e 's/^  partition: leeCorrelations/  partition: flightModel/' -e 's/^  slices: 33/  slices: 20/' \
-    "$work/drumDict" > "$work/flightModel/drumDict"
+    -e '/^  backFraction:/d' -e '/^  forwardDragFactor:/d' "$work/drumDict" > "$work/flightModel/drumDict"
 "$solver" -case "$work/flightModel" > "$work/flightModel/log" 2>&1 || { cat "$work/flightModel/log"; fail "flightModel case did not run"; }
 [ -s "$work/flightModel/results/rtd.csv" ] || fail "flightModel rtd.csv missing"
 sed -i 's/^  slices: 20/  slices: 200/' "$work/flightModel/drumDict"
@@ -49,6 +49,10 @@ bad 's/type: compartment/type: plugFlow/' "model.type.*allowed: compartment, two
 bad 's#file: .*#file: /nonexistent/tracer.csv#' "rtd.tracer.file.*not found"
 bad 's/integrator: exact/integrator: rk4/' "rtd.integrator.*allowed"
 bad 's/backFraction: .*/backFraction: 0.95/' "C_F + C_B"
+# entries the chosen model or partition does not use are refused, not ignored
+bad 's/^  partition: leeCorrelations/  partition: flightModel/' "entry 'model.backFraction': not used by partition flightModel"
+bad 's/^  partition: leeCorrelations/&\n  drift: sherritt/' "entry 'model.drift': not used by partition leeCorrelations"
+bad 's/^rtd:/drift: {outside: clamp}\nrtd:/' "entry 'drift': not used by partition leeCorrelations"
 # passive-phase dispersion (model.denseDispersion for the compartment model)
 bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: -1/' "model.denseDispersion.*range"
 bad 's/^  forwardDragFactor: .*/&\n  denseDispersion: sherritt2001\n  dispersionBed: bottom/' "model.dispersionBed.*allowed: kiln, passive"
@@ -98,4 +102,10 @@ sed -i 's/repose_deg: 35.69/moisture: {inlet: 0.01, outlet: 0.001}/' "$work/twoP
 rm -rf "$work/twoPhase/results"
 if "$solver" -case "$work/twoPhase" > "$work/twoPhase/log" 2>&1; then fail "twoPhase accepted a moisture profile"; fi
 grep -q "material.repose_deg" "$work/twoPhase/log" || fail "twoPhase error does not name material.repose_deg"
+sed -i 's/^  moisture: .*/  repose_deg: 35.69\n&/' "$work/twoPhase/drumDict"
+if "$solver" -case "$work/twoPhase" > "$work/twoPhase/log" 2>&1; then fail "twoPhase accepted a moisture profile beside repose_deg"; fi
+grep -q "entry 'material.moisture': not used by model.type twoPhase" "$work/twoPhase/log" || { cat "$work/twoPhase/log"; fail "twoPhase did not refuse material.moisture"; }
+sed -i -e '/^  moisture: .*/d' -e 's/^model: .*/&\nestimation: {parameters: [kilnTime]}/' "$work/twoPhase/drumDict"
+if "$solver" -case "$work/twoPhase" > "$work/twoPhase/log" 2>&1; then fail "twoPhase accepted an estimation section"; fi
+grep -q "entry 'estimation': not used by model.type twoPhase" "$work/twoPhase/log" || { cat "$work/twoPhase/log"; fail "twoPhase did not refuse estimation"; }
 echo "drumSolver CLI: all checks passed"

@@ -1,0 +1,64 @@
+// model.type compartment: Lee/Sheehan slice network (Lee 2008 Ch. 3,
+// App. 10.2). Partitions: leeCorrelations (Lee's App. 10.2.3 correlations)
+// or flightModel (Lee's geometric unloading + a drift model). Steady holdup
+// profile and the tracer RTD; optional least-squares estimation from the
+// measured curve (section `estimation`, leeCorrelations only), optional
+// passive-phase dispersion, optional stagnant zone.
+// Writes summary.csv, profile.csv, rtd.csv (+ estimation.csv) and PNGs.
+#ifndef DRUM_MODELS_COMPARTMENT_COMPARTMENTDRUMMODEL_HPP
+#define DRUM_MODELS_COMPARTMENT_COMPARTMENTDRUMMODEL_HPP
+
+#include "drum/models/drumModel.hpp"
+#include "drum/models/runOutputs.hpp"
+#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartmentNetwork.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace drum
+{
+
+//- The compartment model's own entries (model and estimation sections)
+struct CompartmentSettings
+{
+    int slices = 30;
+    std::string partition = "leeCorrelations";     //!< leeCorrelations | flightModel
+    LeeParameters lee{9.28, 0.0, 1.0};              //!< kilnTime, backFraction, forwardDragFactor
+    double designLoadMultiplier = 1;
+    StagnantExchange stagnant{0.0, 600.0};          //!< stagnantRatio, exchangeTime
+    DenseDispersionEntry dispersion;
+    std::string dispersionBed = "kiln";             //!< kiln | passive
+    bool subtractNumericalDispersion = false;
+    std::optional<DriftSettings> drift;             //!< flightModel only
+    // estimation
+    std::vector<std::string> estimate;
+    int starts = 1;
+    bool logObjective = false;
+    double logOffset = 0.01;                        //!< 1/h
+};
+
+class CompartmentDrumModel : public DrumModel
+{
+public:
+    explicit CompartmentDrumModel(const DrumCase& c);
+
+    void run(const std::filesystem::path& out) const override;
+
+    const CompartmentSettings& settings() const { return s_; }
+
+private:
+    void runWith(const LeeDryer& dryer, const LeeParameters& p, const StagnantExchange& stagnant,
+                 const std::optional<MeasuredTracer>& measured, const std::filesystem::path& out) const;
+
+    DrumCase c_;
+    CompartmentSettings s_;
+    LeeDryer dryer_;
+};
+
+std::unique_ptr<DrumModel> makeCompartmentDrumModel(const DrumCase& c);
+
+} // namespace drum
+
+#endif

@@ -1,0 +1,157 @@
+#include "drum/models/runOutputs.hpp"
+
+#include "drum/io/csv.hpp"
+#include "drum/io/csvWriter.hpp"
+#include "drum/io/inputError.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace drum
+{
+
+void say(const std::string& s)
+{
+    std::cout << "drumSolver: " << s << std::endl;
+}
+
+
+MeasuredTracer readTracer(const TracerFile& tf)
+{
+    MeasuredTracer m;
+    try
+    {
+        io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(tf.file.string());
+        in.read_header(io::ignore_extra_column, tf.timeColumn, tf.eColumn);
+        double t, e;
+        while (in.read_row(t, e))
+        {
+            m.t.push_back(t*tf.timeScale);
+            m.E.push_back(e*tf.eScale);
+        }
+    }
+    catch (const io::error::base& e)
+    {
+        throw InputError(tf.file.string(), "rtd.tracer", e.what());
+    }
+    if (m.t.size() < 3)
+    {
+        throw InputError(tf.file.string(), "rtd.tracer", "needs at least 3 rows");
+    }
+    return m;
+}
+
+
+std::optional<MeasuredTracer> readTracer(const DrumCase& c)
+{
+    if (!c.tracer) return std::nullopt;
+    return readTracer(*c.tracer);
+}
+
+
+void plotIfPossible(const Plot& p, const fs::path& file)
+{
+    if (!gnuplotAvailable())
+    {
+        say("gnuplot not on PATH: " + file.filename().string() + " not drawn");
+        return;
+    }
+    writePng(p, file);
+}
+
+
+std::optional<RtdMoments> writeSummary
+(
+    std::vector<std::string> cols,
+    std::vector<double> row,
+    const std::optional<MeasuredTracer>& measured,
+    const fs::path& out
+)
+{
+    std::optional<RtdMoments> mm;
+    if (measured)
+    {
+        mm = sampledMoments(measured->t, measured->E);
+        cols.insert(cols.end(), {"measured_mean_s", "measured_std_s", "measured_skewness"});
+        row.insert(row.end(), {mm->mean, mm->sd(), mm->skewness});
+    }
+    CsvTable summary(cols);
+    summary.addRow(row);
+    summary.write(out/"summary.csv");
+    return mm;
+}
+
+
+std::string measuredNote(const std::optional<RtdMoments>& mm)
+{
+    if (!mm) return {};
+    std::ostringstream os;
+    os << std::setprecision(4) << " (measured " << mm->mean/60 << " / " << mm->sd()/60 << " min)";
+    return os.str();
+}
+
+
+void writeRtdOutputs
+(
+    const DrumCase& c,
+    const std::vector<double>& time,
+    const std::vector<double>& E,
+    const std::optional<MeasuredTracer>& measured,
+    const std::string& modelLabel,
+    const fs::path& out
+)
+{
+    CsvTable r({"time_s", "E_per_s", "F_cumulative"});
+    double F = 0;
+    for (std::size_t i = 0; i < time.size(); ++i)
+    {
+        if (i > 0) F += 0.5*(time[i] - time[i - 1])*(E[i] + E[i - 1]);
+        r.addRow({time[i], E[i], F});
+    }
+    r.write(out/"rtd.csv");
+
+    Plot pr;
+    pr.title = "Residence-time distribution";
+    pr.xlabel = "time after pulse start (min)";
+    pr.ylabel = "E(t) (1/min)";
+    PlotSeries model{modelLabel, {}, {}};
+    for (std::size_t i = 0; i < time.size(); ++i)
+    {
+        model.x.push_back(time[i]/60);
+        model.y.push_back(E[i]*60);
+    }
+    pr.series.push_back(model);
+    if (measured)
+    {
+        std::string name = c.tracer->file.filename().string();
+        for (char& ch : name) if (ch == '_') ch = ' ';   // gnuplot enhanced text
+        PlotSeries meas{"measured (" + name + ")", {}, {}, "points pt 7 ps 1.2"};
+        for (std::size_t i = 0; i < measured->t.size(); ++i)
+        {
+            if (measured->t[i] < 0) continue;
+            meas.x.push_back(measured->t[i]/60);
+            meas.y.push_back(measured->E[i]*60);
+        }
+        pr.series.push_back(meas);
+    }
+    plotIfPossible(pr, out/"rtd.png");
+    // The tail on a log scale (positive values only)
+    Plot lg = pr;
+    lg.logy = true;
+    lg.title = "Residence-time distribution (log scale: the tail)";
+    for (PlotSeries& se : lg.series)
+    {
+        PlotSeries keep{se.title, {}, {}, se.style};
+        for (std::size_t i = 0; i < se.x.size(); ++i)
+        {
+            if (se.y[i] > 1e-7) { keep.x.push_back(se.x[i]); keep.y.push_back(se.y[i]); }
+        }
+        se = keep;
+    }
+    plotIfPossible(lg, out/"rtd_log.png");
+}
+
+} // namespace drum
