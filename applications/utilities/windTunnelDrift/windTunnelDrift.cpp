@@ -35,6 +35,7 @@
 #include "drum/windTunnel/windTunnelData.hpp"
 #include "drum/windTunnel/windTunnelPrediction.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -168,8 +169,10 @@ std::vector<std::string> commaList(const std::string& list, const std::string& o
 //  buildDriftTable's `material` entry) serves that material; a table
 //  without one serves every other material. Two tables for one material,
 //  two generic tables, or a table naming a material the materials file
-//  does not have: InputError. Other models ignore -table (empty map), and
-//  so does auto without one (its table is then optional).
+//  does not have: InputError. Without -table: the shipped generic table
+//  and the shipped material tables (etc/defaults/driftTables/materialTables),
+//  so each material is served from its own. Other models ignore -table
+//  (empty map), and so does auto without one (its table is then optional).
 std::map<std::string, fs::path> tablesByMaterial
 (
     const std::string& list,
@@ -182,7 +185,22 @@ std::map<std::string, fs::path> tablesByMaterial
     if (model != "table" && model != "tableVc" && !(model == "auto" && !list.empty())) return out;
     std::vector<fs::path> files;
     for (const auto& f : commaList(list, "-table")) files.push_back(f);
-    if (files.empty()) files.push_back(drum::defaultDriftTableFile());
+    if (files.empty())
+    {
+        files.push_back(drum::defaultDriftTableFile());
+        const fs::path dir = drum::defaultDriftTableFile().parent_path()/"materialTables";
+        std::vector<fs::path> own;
+        if (fs::is_directory(dir))
+        {
+            for (const auto& e : fs::directory_iterator(dir))
+            {
+                const std::string n = e.path().filename().string();
+                if (n.size() > 9 && n.compare(n.size() - 9, 9, "Table.csv") == 0) own.push_back(e.path());
+            }
+        }
+        std::sort(own.begin(), own.end());   // the same order, whatever the file system's
+        files.insert(files.end(), own.begin(), own.end());
+    }
     fs::path generic;
     for (const auto& f : files)
     {

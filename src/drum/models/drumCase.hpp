@@ -7,7 +7,7 @@
 #define DRUM_MODELS_DRUMCASE_HPP
 
 #include "drum/drift/driftDictionary.hpp"
-#include "drum/flights/sherrittFlightSpec.hpp"
+#include "drum/flights/sherritt/sherrittFlightSpec.hpp"
 #include "drum/io/dictReader.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 

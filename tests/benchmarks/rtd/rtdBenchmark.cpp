@@ -9,7 +9,7 @@
 // the difference from the exact propagator's moments on the same grid.
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 
 #include <benchmark/benchmark.h>
 #include <cvode/cvode.h>

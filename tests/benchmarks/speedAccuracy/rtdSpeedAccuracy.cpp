@@ -20,7 +20,7 @@
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 
 #include <chrono>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Lee's App. 10.2.3 correlations: geometry hand values and limits
-#include "drum/transport/compartmentCorrelations.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentCorrelations.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // untouched, the mean unchanged (holdup theorem), the variance against the
 // exact backflow-cell formula and the continuum 2 D L/u^3, the numerical
 // part u_b dz/2, Sherritt 2001 Eq 84 per slice by hand, bad input.
-#include "drum/transport/compartmentDispersion.hpp"
+#include "drum/transport/compartment/compartmentDispersion.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/numerics/constants.hpp"

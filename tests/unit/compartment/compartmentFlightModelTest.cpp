@@ -1,5 +1,5 @@
 // Flight-model partition: limits against hand values from the flight model
-#include "drum/transport/compartmentFlightModel.hpp"
+#include "drum/transport/compartment/compartmentFlightModel.hpp"
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/inputError.hpp"
 

@@ -1,7 +1,7 @@
 // Compartment network: steady state against an independent dynamic
 // integration of the mass balances, hand values, flow conservation, input
 // checks.
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 #include "drum/io/inputError.hpp"
 
 #include "mixedSlices.hpp"

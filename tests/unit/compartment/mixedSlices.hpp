@@ -3,7 +3,7 @@
 #ifndef TESTS_UNIT_COMPARTMENT_MIXEDSLICES_HPP
 #define TESTS_UNIT_COMPARTMENT_MIXEDSLICES_HPP
 
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 // Banded Metzler exponential against Eigen's dense Pade exponential
 // (unsupported/Eigen/MatrixFunctions), an independent method
 #include "drum/rtd/metzlerExponential.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <gtest/gtest.h>

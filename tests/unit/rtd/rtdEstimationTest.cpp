@@ -1,6 +1,6 @@
 // Least-squares estimation: recovers known parameters from a synthetic
 // tracer curve; CIs cover the truth under noise; t quantiles against tables.
-#include "drum/transport/compartmentLeeEstimation.hpp"
+#include "drum/transport/compartment/compartmentLeeEstimation.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <gtest/gtest.h>

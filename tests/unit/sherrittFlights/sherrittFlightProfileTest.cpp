@@ -1,7 +1,7 @@
 // Sherritt 1991 flight table: interpolation, Eq 40 discharge rate, holdup as
 // the integral of discharge (Eq 97), initial discharge angle, bad input.
-#include "drum/flights/sherrittFlightProfile.hpp"
-#include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/numerics/constants.hpp"
 

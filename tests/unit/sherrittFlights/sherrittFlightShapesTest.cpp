@@ -1,7 +1,7 @@
 // Flight-table generators: the tabulated horizontal lengths against
 // geometry computed independently (closed forms, shoelace areas).
-#include "drum/flights/sherrittFlightShapes.hpp"
-#include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/numerics/constants.hpp"
 

@@ -4,8 +4,8 @@
 #ifndef TESTS_UNIT_TRANSPORT_SHEIKHTESTCASE_HPP
 #define TESTS_UNIT_TRANSPORT_SHEIKHTESTCASE_HPP
 
-#include "drum/flights/sherrittFlightShapes.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
 
 #include <string>
 

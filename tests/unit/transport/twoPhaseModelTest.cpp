@@ -1,9 +1,9 @@
 // Sherritt 1991 two-phase model: analytic EAD results, mass balances,
 // closed forms of Sherritt 1991 §3.6-3.7, DRUM1 inversion, axial solve, bad input.
-#include "drum/flights/sherrittFlightShapes.hpp"
-#include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
 #include "sheikhTestCase.hpp"
 #include "drum/numerics/constants.hpp"
 

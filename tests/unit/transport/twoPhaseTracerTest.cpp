@@ -1,12 +1,12 @@
 // Tracer network of Sherritt's (1991) two-phase model: per-class holdup/feed
 // against Eq 139, conservation, and limits with closed forms (tanks in
 // series, lift-and-fall chain, closed-closed axial dispersion).
-#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
-#include "drum/transport/twoPhaseTracer.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
+#include "drum/transport/twoPhase/twoPhaseTracer.hpp"
 #include "sheikhTestCase.hpp"
 #include "drum/numerics/constants.hpp"
 

@@ -3,7 +3,7 @@
 // with Lee's Table 7.2 fit on the same objective. The moments of the fit
 // are printed; the model's SD is structurally far below the measured one.
 #include "drum/io/projectPaths.hpp"
-#include "drum/transport/compartmentLeeEstimation.hpp"
+#include "drum/transport/compartment/compartmentLeeEstimation.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/io/csv.hpp"

@@ -3,7 +3,7 @@
 // Table 7.2 fitted parameters. Targets are read from lee_model_results.csv
 // and invicta_rtd.csv (data/), never typed in.
 #include "drum/io/projectPaths.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/io/csv.hpp"

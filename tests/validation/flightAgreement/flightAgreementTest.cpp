@@ -58,9 +58,9 @@
 // theta - phi (Sherritt 1991 §3.2). Sherritt's frame is Lee's mirrored in x
 // (x_S = -x_L, z_S = y_L): checked on the root, elbow and tip.
 #include "drum/flights/leeFlight.hpp"
-#include "drum/flights/sherrittFlightProfile.hpp"
-#include "drum/flights/sherrittFlightShapes.hpp"
-#include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/numerics/constants.hpp"
 

@@ -2,8 +2,8 @@
 // thesis gives no plotted numbers; flight sizes are our assumptions
 // (cases/sherrittDrums/README.md). The flights are built as drumSolver
 // builds them from cases/sherrittDrums/*/drumDict (drum::buildSherrittFlight).
-#include "drum/flights/sherrittFlightSpec.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
+#include "drum/flights/sherritt/sherrittFlightSpec.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include <gtest/gtest.h>

@@ -6,9 +6,9 @@
 #include "drum/numerics/constants.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
-#include "drum/transport/compartmentDispersion.hpp"
-#include "drum/transport/compartmentFlightModel.hpp"
-#include "drum/transport/compartmentLeeEstimation.hpp"
+#include "drum/transport/compartment/compartmentDispersion.hpp"
+#include "drum/transport/compartment/compartmentFlightModel.hpp"
+#include "drum/transport/compartment/compartmentLeeEstimation.hpp"
 
 #include <cmath>
 #include <iomanip>

@@ -10,8 +10,8 @@
 
 #include "drum/models/drumModel.hpp"
 #include "drum/models/runOutputs.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #include "drum/models/twoPhase/twoPhaseDrumModel.hpp"
 
-#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/models/runOutputs.hpp"
@@ -8,8 +8,8 @@
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/axialDispersion.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
-#include "drum/transport/twoPhaseTracer.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
+#include "drum/transport/twoPhase/twoPhaseTracer.hpp"
 
 #include <cmath>
 #include <iomanip>

@@ -9,7 +9,7 @@
 #define DRUM_MODELS_TWOPHASE_TWOPHASEDRUMMODEL_HPP
 
 #include "drum/models/drumModel.hpp"
-#include "drum/transport/twoPhaseCase.hpp"
+#include "drum/transport/twoPhase/twoPhaseCase.hpp"
 
 #include <optional>
 

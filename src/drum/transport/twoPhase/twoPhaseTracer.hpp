@@ -33,7 +33,7 @@
 #define DRUM_TRANSPORT_TWOPHASETRACER_HPP
 
 #include "drum/rtd/tracerSystem.hpp"
-#include "drum/transport/twoPhaseModel.hpp"
+#include "drum/transport/twoPhase/twoPhaseModel.hpp"
 
 #include <vector>
 

@@ -16,11 +16,12 @@
 #ifndef DRUM_TRANSPORT_TWOPHASEMODEL_HPP
 #define DRUM_TRANSPORT_TWOPHASEMODEL_HPP
 
-#include "drum/flights/sherrittFlightSurface.hpp"
-#include "drum/transport/twoPhaseCase.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
+#include "drum/transport/twoPhase/twoPhaseCase.hpp"
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace drum
@@ -106,6 +107,10 @@ struct AxialOptions
     //  flights' final discharge angle (no weir, Sherritt 1991 §3.7)
     std::optional<double> dischargeEndAngle;
 };
+
+//- The largest feed DRUM1 carries over a set of states and its theta_i
+//  (0, 0 when none carries solids towards the discharge)
+std::pair<double, double> largestCarriedFeed(const std::vector<TwoPhaseState>& states);
 
 class TwoPhaseModel
 {

@@ -10,7 +10,7 @@
 #ifndef DRUM_FLIGHTS_SHERRITTFLIGHTSURFACE_HPP
 #define DRUM_FLIGHTS_SHERRITTFLIGHTSURFACE_HPP
 
-#include "drum/flights/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 #define DRUM_TRANSPORT_COMPARTMENTLEEESTIMATION_HPP
 
 #include "drum/rtd/rtdEstimation.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 
 #include <string>
 #include <vector>

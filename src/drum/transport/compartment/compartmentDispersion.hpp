@@ -26,7 +26,7 @@
 
 #include "drum/rtd/tracerSystem.hpp"
 #include "drum/transport/axialDispersion.hpp"
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 
 #include <string>
 #include <vector>

@@ -24,7 +24,7 @@
 #ifndef DRUM_FLIGHTS_SHERRITTFLIGHTSHAPES_HPP
 #define DRUM_FLIGHTS_SHERRITTFLIGHTSHAPES_HPP
 
-#include "drum/flights/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
-#include "drum/flights/sherrittFlightSpec.hpp"
+#include "drum/flights/sherritt/sherrittFlightSpec.hpp"
 
-#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
 #include "drum/io/inputError.hpp"
 
 namespace drum

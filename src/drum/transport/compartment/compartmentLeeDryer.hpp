@@ -6,8 +6,8 @@
 #ifndef DRUM_TRANSPORT_COMPARTMENTLEEDRYER_HPP
 #define DRUM_TRANSPORT_COMPARTMENTLEEDRYER_HPP
 
-#include "drum/transport/compartmentCorrelations.hpp"
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentCorrelations.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 
 #include <optional>
 #include <vector>

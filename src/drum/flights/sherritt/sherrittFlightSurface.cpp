@@ -1,4 +1,4 @@
-#include "drum/flights/sherrittFlightSurface.hpp"
+#include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"

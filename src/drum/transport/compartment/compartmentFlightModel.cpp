@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentFlightModel.hpp"
+#include "drum/transport/compartment/compartmentFlightModel.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include "drum/flights/unloadingModel.hpp"

@@ -1,4 +1,4 @@
-#include "drum/flights/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"

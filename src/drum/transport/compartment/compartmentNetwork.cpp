@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentNetwork.hpp"
 
 #include "drum/io/inputError.hpp"
 

@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentCorrelations.hpp"
+#include "drum/transport/compartment/compartmentCorrelations.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"

@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 
 #include "drum/io/inputError.hpp"
 

@@ -10,8 +10,8 @@
 #define DRUM_TRANSPORT_TWOPHASECASE_HPP
 
 #include "drum/drift/driftModel.hpp"
-#include "drum/flights/sherrittFlightProfile.hpp"
-#include "drum/transport/twoPhaseSurfaceClosure.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
+#include "drum/transport/twoPhase/twoPhaseSurfaceClosure.hpp"
 
 #include <memory>
 #include <optional>

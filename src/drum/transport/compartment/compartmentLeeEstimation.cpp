@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentLeeEstimation.hpp"
+#include "drum/transport/compartment/compartmentLeeEstimation.hpp"
 
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdSimulation.hpp"

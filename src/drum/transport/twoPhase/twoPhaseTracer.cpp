@@ -1,4 +1,4 @@
-#include "drum/transport/twoPhaseTracer.hpp"
+#include "drum/transport/twoPhase/twoPhaseTracer.hpp"
 
 #include "drum/io/inputError.hpp"
 

@@ -1,4 +1,4 @@
-#include "drum/flights/sherrittFlightShapes.hpp"
+#include "drum/flights/sherritt/sherrittFlightShapes.hpp"
 #include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"

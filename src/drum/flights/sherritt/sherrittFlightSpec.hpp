@@ -14,7 +14,7 @@
 #ifndef DRUM_FLIGHTS_SHERRITTFLIGHTSPEC_HPP
 #define DRUM_FLIGHTS_SHERRITTFLIGHTSPEC_HPP
 
-#include "drum/flights/sherrittFlightProfile.hpp"
+#include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 
 #include <string>
 #include <vector>

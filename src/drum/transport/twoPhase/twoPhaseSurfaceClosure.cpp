@@ -1,4 +1,4 @@
-#include "drum/transport/twoPhaseSurfaceClosure.hpp"
+#include "drum/transport/twoPhase/twoPhaseSurfaceClosure.hpp"
 #include "drum/numerics/constants.hpp"
 
 namespace drum

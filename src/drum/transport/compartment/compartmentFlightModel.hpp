@@ -18,7 +18,7 @@
 #define DRUM_TRANSPORT_COMPARTMENTFLIGHTMODEL_HPP
 
 #include "drum/drift/driftModel.hpp"
-#include "drum/transport/compartmentLeeDryer.hpp"
+#include "drum/transport/compartment/compartmentLeeDryer.hpp"
 
 #include <memory>
 #include <vector>

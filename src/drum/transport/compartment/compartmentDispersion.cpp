@@ -1,4 +1,4 @@
-#include "drum/transport/compartmentDispersion.hpp"
+#include "drum/transport/compartment/compartmentDispersion.hpp"
 
 #include "drum/io/inputError.hpp"
 
