@@ -2,7 +2,7 @@
 
 #include "drum/io/csv.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/windTunnel/tunnelCollection.hpp"
+#include "scoring/tunnelCollection.hpp"
 
 #include <atomic>
 #include <chrono>

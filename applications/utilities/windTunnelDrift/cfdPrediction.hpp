@@ -4,7 +4,7 @@
 #ifndef WINDTUNNELDRIFT_CFDPREDICTION_HPP
 #define WINDTUNNELDRIFT_CFDPREDICTION_HPP
 
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/windTunnelData.hpp"
 
 #include <filesystem>
 #include <map>
@@ -30,7 +30,7 @@ struct CfdOptions
     std::string wakeShare;           //!< curtainCase -wakeShare (empty: its default; checked there)
     std::string releaseVelocity;     //!< curtainCase -releaseVelocity (empty: the template's)
     //! how a row's advance is measured: "sherritt" (the tunnel's collection rule on the
-    //! landing distribution, drum/windTunnel/tunnelCollection.hpp) or "landed" (the mean
+    //! landing distribution, scoring/tunnelCollection.hpp) or "landed" (the mean
     //! drift of what crossed the floor plane; a class that never lands fails the row)
     std::string collection = "sherritt";
 };

@@ -4,8 +4,8 @@
 #include "drum/io/csv.hpp"
 #include "drum/io/gnuplot.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/windTunnel/predictionScore.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/predictionScore.hpp"
+#include "scoring/windTunnelData.hpp"
 
 #include <cmath>
 #include <iomanip>

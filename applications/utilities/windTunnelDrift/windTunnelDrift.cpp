@@ -32,8 +32,8 @@
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
-#include "drum/windTunnel/windTunnelPrediction.hpp"
+#include "scoring/windTunnelData.hpp"
+#include "scoring/windTunnelPrediction.hpp"
 
 #include <algorithm>
 #include <cmath>

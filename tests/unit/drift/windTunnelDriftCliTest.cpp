@@ -5,7 +5,7 @@
 // input: clear errors, no output file, an existing output left untouched.
 #include "drum/io/projectPaths.hpp"
 #include "drum/io/csv.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/windTunnelData.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "syntheticTable.hpp"
 
@@ -157,7 +157,7 @@ TEST(WindTunnelDriftCli, MaterialTablesServeTheirMaterialAndAGenericTableTheRest
     ASSERT_EQ(run("-tests " + tests + " -out " + full.string() + " -model tableVc -table " + uniformTable(1.0).string()).rc, 0);
     const fs::path sand = materialTable(uniformTable(0.5), "sand", "sandTable.csv");
     // sand rows from the sand table (V_c/V_g 0.5), the others from the generic one (1.0); order free
-    for (const std::string list : {sand.string() + "," + uniformTable(1.0).string(),
+    for (const std::string& list : {sand.string() + "," + uniformTable(1.0).string(),
                                    uniformTable(1.0).string() + "," + sand.string()})
     {
         const CliRun r = run("-tests " + tests + " -out " + both.string() + " -model tableVc -table " + list);

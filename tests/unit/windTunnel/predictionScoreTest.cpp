@@ -1,8 +1,8 @@
 // Scores worked by hand, and the isolated-particle and Sherritt-correction
 // scores the data README reports for the 69 shared wind-tunnel rows
 #include "drum/io/projectPaths.hpp"
-#include "drum/windTunnel/predictionScore.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/predictionScore.hpp"
+#include "scoring/windTunnelData.hpp"
 
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"

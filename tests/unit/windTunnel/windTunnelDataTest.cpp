@@ -1,7 +1,7 @@
 // Reading Sherritt's wind-tunnel tables, and refusing malformed ones
 #include "drum/io/projectPaths.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/windTunnelData.hpp"
 
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"

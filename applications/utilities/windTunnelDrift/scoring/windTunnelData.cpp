@@ -1,4 +1,4 @@
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/windTunnelData.hpp"
 
 #include "drum/io/csv.hpp"
 #include "drum/io/inputError.hpp"

@@ -1,4 +1,4 @@
-#include "drum/windTunnel/windTunnelPrediction.hpp"
+#include "scoring/windTunnelPrediction.hpp"
 
 namespace drum
 {

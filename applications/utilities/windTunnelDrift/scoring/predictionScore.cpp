@@ -1,4 +1,4 @@
-#include "drum/windTunnel/predictionScore.hpp"
+#include "scoring/predictionScore.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -6,7 +6,7 @@
 #define DRUM_WINDTUNNEL_WINDTUNNELPREDICTION_HPP
 
 #include "drum/drift/driftModel.hpp"
-#include "drum/windTunnel/windTunnelData.hpp"
+#include "scoring/windTunnelData.hpp"
 
 namespace drum
 {

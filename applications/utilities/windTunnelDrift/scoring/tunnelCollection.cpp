@@ -1,4 +1,4 @@
-#include "drum/windTunnel/tunnelCollection.hpp"
+#include "scoring/tunnelCollection.hpp"
 
 #include "drum/io/inputError.hpp"
 
