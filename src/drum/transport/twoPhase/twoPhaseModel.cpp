@@ -67,12 +67,18 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     const std::string& file = case_.name;
     requirePositive(d.shellDiameter, "drum.diameter", file);
     requirePositive(d.length, "drum.length", file);
-    requireInRange(d.slope, 0.0, 20*deg, "drum.slope [rad]", file);
+    // the dictionary's entries and ranges (drumSolver checks them first; this guards library callers)
+    if (!(d.slope >= 0 && d.slope <= 20*deg*(1 + 1e-12)))
+    {
+        std::ostringstream os;
+        os << "value " << d.slope/deg << " outside the allowed range [0, 20]";
+        throw InputError(file, "drum.slope_deg", os.str());
+    }
     if (!(d.speed > 0 && d.speed <= 1.0))
     {
         std::ostringstream os;
-        os << "speed " << d.speed << " rev/s outside (0, 1] rev/s";
-        throw InputError(file, "drum.speed", os.str());
+        os << "value " << 60*d.speed << " outside the allowed range (0, 60]";
+        throw InputError(file, "drum.speed_rpm", os.str());
     }
     case_.exterior->checkTipsAgainst(d.shellDiameter, "flights.exterior.tipDiameter");
     if (d.centrefillDiameter != 0)
@@ -108,18 +114,18 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     requireInRange(m.sphericity, 1e-3, 1.0, "material.sphericity", file);
     if (m.sieveSizes.empty() || m.sieveSizes.size() != m.massFractions.size())
     {
-        throw InputError(file, "material.sizes", "need one mass fraction per sieve size, at least one class");
+        throw InputError(file, "material.fractions_pct", "need one mass fraction per sieve size in material.sizes_um, at least one class");
     }
     double total = 0;
     for (std::size_t i = 0; i < m.sieveSizes.size(); ++i)
     {
-        requirePositive(m.sieveSizes[i], "material.sizes[" + std::to_string(i) + "].diameter", file);
-        requireInRange(m.massFractions[i], 0.0, 1e9, "material.sizes[" + std::to_string(i) + "].fraction", file);
+        requirePositive(m.sieveSizes[i], "material.sizes_um[" + std::to_string(i) + "]", file);
+        requireInRange(m.massFractions[i], 0.0, 1e9, "material.fractions_pct[" + std::to_string(i) + "]", file);
         total += m.massFractions[i];
     }
     if (!(total > 0))
     {
-        throw InputError(file, "material.sizes", "mass fractions sum to zero");
+        throw InputError(file, "material.fractions_pct", "mass fractions sum to zero");
     }
     for (std::size_t i = 0; i < m.sieveSizes.size(); ++i)
     {
@@ -127,8 +133,8 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
         dp_.push_back(m.sieveSizes[i]*m.sphericity);  // code: D_p = sieve size x sphericity
     }
     const auto& gas = case_.gas;
-    requireInRange(gas.massRate, 0.0, 1e6, "gas.massRate [kg/s]", file);
-    requireInRange(gas.temperatureC, -50.0, 1500.0, "gas.temperature [degC]", file);
+    requireInRange(gas.massRate, 0.0, 1e4, "gas.massRate", file);
+    requireInRange(gas.temperatureC, -50.0, 1500.0, "gas.temperature_C", file);
     const particleDrag::Gas air = particleDrag::Gas::air(gas.temperatureC);
     gasDensity_ = air.density;
     drift_ = case_.options.drift ? case_.options.drift : std::make_shared<SherrittSheetDrift>(air);
@@ -137,13 +143,13 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     alphaGas_ = counter ? -d.slope : d.slope;  // docs/errata.md S12: alpha < 0 counter-current
     if (!case_.options.closure)
     {
-        throw InputError(file, "model.closure", "no surface closure given");
+        throw InputError(file, "TwoPhaseOptions::closure", "no surface closure given (a library option, not a drumDict entry)");
     }
-    requireInRange(case_.options.minDischargeAngle, 1*deg, 179*deg, "model.minDischargeAngle [rad]", file);
-    requireInRange(case_.options.sweepStep, 0.01*deg, 10*deg, "model.sweepStep [rad]", file);
-    if (case_.options.axialSteps < 4 || case_.options.axialSteps > 100000)
+    requireInRange(case_.options.minDischargeAngle, 1*deg, 179*deg, "TwoPhaseOptions::minDischargeAngle (rad; a library option, not a drumDict entry)", file);
+    requireInRange(case_.options.sweepStep, 0.01*deg, 10*deg, "TwoPhaseOptions::sweepStep (rad; a library option, not a drumDict entry)", file);
+    if (case_.options.axialSteps < 10 || case_.options.axialSteps > 100000)
     {
-        throw InputError(file, "model.axialSteps", "must be in [4, 100000]");
+        throw InputError(file, "model.axialSteps", "must be in [10, 100000]");
     }
     if (case_.options.imposedDenseFlow && !std::isfinite(*case_.options.imposedDenseFlow))
     {

@@ -115,7 +115,9 @@ std::pair<double, double> largestCarriedFeed(const std::vector<TwoPhaseState>& s
 class TwoPhaseModel
 {
 public:
-    //- Validates the case; throws drum::InputError naming the entry
+    //- Validates the case; throws drum::InputError naming the drumDict entry
+    //  the value comes from (drumSolver reads it with the same range first),
+    //  or the TwoPhaseOptions member for library-only options
     explicit TwoPhaseModel(TwoPhaseCase c);
 
     const TwoPhaseCase& input() const { return case_; }
