@@ -1,5 +1,6 @@
 #include "drum/drift/driftTable.hpp"
 
+#include "drum/drift/driftTableFile.hpp"
 #include "drum/io/inputError.hpp"
 
 #include <algorithm>
@@ -19,33 +20,11 @@ const std::array<std::string, driftAxisCount> axisNames{{
     "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m",
     "flight_length_m", "particle_density_kg_m3", "particle_diameter_m"}};
 
-const std::vector<std::string> columns{
-    "case", "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m", "flight_length_m",
-    "particle_density_kg_m3", "particle_diameter_m", "vc_over_vg", "drift_m", "captured_fraction"};
-
 constexpr double nodeTol = 1e-9;   // relative: two printed values are one node
 
 bool sameNode(double a, double b)
 {
     return std::abs(a - b) <= nodeTol*std::max({1e-300, std::abs(a), std::abs(b)});
-}
-
-std::string trim(const std::string& s)
-{
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string::npos) return "";
-    const auto e = s.find_last_not_of(" \t\r");
-    return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> split(const std::string& s, char sep)
-{
-    std::vector<std::string> out;
-    std::string cur;
-    std::istringstream is(s);
-    while (std::getline(is, cur, sep)) out.push_back(trim(cur));
-    if (!s.empty() && s.back() == sep) out.push_back("");
-    return out;
 }
 
 std::vector<std::string> words(const std::string& s)
@@ -109,67 +88,30 @@ const std::string& driftAxisName(int axis)
 
 DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions options)
 {
-    const std::string file = path.string();
-    std::ifstream in(path, std::ios::binary);
-    if (!std::filesystem::exists(path) || !in)
-    {
-        throw InputError(file, "", "drift table not found or not readable");
-    }
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (text.empty())
-    {
-        throw InputError(file, "", "empty file (truncated drift table?)");
-    }
-    const bool endsWithNewline = text.back() == '\n';
-    std::vector<std::string> lines;
-    {
-        std::istringstream is(text);
-        std::string l;
-        while (std::getline(is, l)) lines.push_back(l);
-    }
+    return fromFile(readDriftTableFile(path), path, std::move(options));
+}
 
+
+DriftTable DriftTable::fromFile(const DriftTableFile& f, const std::filesystem::path& path, DriftTableOptions options)
+{
+    const std::string file = path.string();
     DriftTable t;
     t.file_ = path;
     t.options_ = std::move(options);
-
-    // Magic line
-    const std::string magic = trim(lines[0]);
-    if (magic.rfind("# dryerDriftTable", 0) != 0)
-    {
-        throw InputError(file, line(1), "not a drift table: the first line must be '# dryerDriftTable 1', found '"
-            + magic.substr(0, 60) + "'");
-    }
-    const auto mw = words(magic);
-    if (mw.size() != 3 || mw[2] != "1")
-    {
-        throw InputError(file, line(1), "drift table version '" + (mw.size() > 2 ? mw[2] : std::string("?"))
-            + "': this reader reads version 1 only (regenerate the table with buildDriftTable)");
-    }
-
-    // Header lines "# key: value"
     std::vector<std::string> keyOrder;
-    std::size_t k = 1;
-    for (; k < lines.size() && trim(lines[k]).rfind('#', 0) == 0; ++k)
+    for (const auto& kv : f.header)
     {
-        const std::string body = trim(trim(lines[k]).substr(1));
-        const auto colon = body.find(':');
-        if (colon == std::string::npos)
+        if (t.header_.count(kv.first))
         {
-            throw InputError(file, line(int(k) + 1), "header line is not '# key: value': '" + body + "'");
-        }
-        const std::string key = trim(body.substr(0, colon));
-        if (t.header_.count(key))
-        {
-            // one '# missing:' line per missing case; other keys only once
-            if (key != "missing")
+            if (kv.first != "missing")
             {
-                throw InputError(file, line(int(k) + 1), "header key '" + key + "' given twice");
+                throw InputError(file, "header " + kv.first, "header key '" + kv.first + "' given twice");
             }
-            t.header_[key] += "\n" + trim(body.substr(colon + 1));
+            t.header_[kv.first] += "\n" + kv.second;
             continue;
         }
-        t.header_[key] = trim(body.substr(colon + 1));
-        keyOrder.push_back(key);
+        t.header_[kv.first] = kv.second;
+        keyOrder.push_back(kv.first);
     }
 
     // Required keys, in the contract's order
@@ -237,69 +179,16 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
     }
     const bool missingAllowed = t.header_.count("missing") > 0;
 
-    // Column header row
-    if (k >= lines.size())
-    {
-        throw InputError(file, line(int(k) + 1), "truncated: no column header row after the comment header");
-    }
-    {
-        const auto cols = split(trim(lines[k]), ',');
-        for (std::size_t c = 0; c < columns.size(); ++c)
-        {
-            if (c >= cols.size() || cols[c] != columns[c])
-            {
-                throw InputError(file, line(int(k) + 1), "column " + std::to_string(c + 1) + " must be '"
-                    + columns[c] + "'" + (c < cols.size() ? ", found '" + cols[c] + "'" : ", missing"));
-            }
-        }
-        if (cols.size() != columns.size())
-        {
-            throw InputError(file, line(int(k) + 1), "extra column '" + cols[columns.size()] + "'");
-        }
-    }
-    ++k;
-
-    // Data rows
-    struct Raw { std::array<double, driftAxisCount> x; double v[3]; int line; };
-    std::vector<Raw> raw;
-    for (; k < lines.size(); ++k)
-    {
-        const int ln = int(k) + 1;
-        const std::string l = trim(lines[k]);
-        if (l.empty())
-        {
-            throw InputError(file, line(ln), "empty line inside the data rows");
-        }
-        const auto f = split(l, ',');
-        if (f.size() != columns.size())
-        {
-            throw InputError(file, line(ln), std::to_string(f.size()) + " fields, expected "
-                + std::to_string(columns.size()) + (f.size() < columns.size() ? " (truncated file?)" : ""));
-        }
-        if (f[0].empty())
-        {
-            throw InputError(file, line(ln) + ", column case", "empty case name");
-        }
-        Raw r;
-        r.line = ln;
-        for (int a = 0; a < driftAxisCount; ++a)
-        {
-            r.x[a] = number(f[1 + a], file, line(ln) + ", column " + axisNames[a]);
-        }
-        for (int v = 0; v < 3; ++v)
-        {
-            r.v[v] = number(f[7 + v], file, line(ln) + ", column " + columns[7 + v]);
-        }
-        raw.push_back(r);
-    }
-    if (!endsWithNewline)
-    {
-        throw InputError(file, line(int(lines.size())), "the last line has no line end: truncated file");
-    }
-    if (raw.empty())
+    if (f.rows.empty())
     {
         throw InputError(file, "", "no data rows (truncated drift table?)");
     }
+    const auto& raw = f.rows;
+    // rows not read from a file are named by their position
+    const auto where = [](const DriftTableRecord& r, std::size_t i)
+    {
+        return r.line > 0 ? line(r.line) : "row " + std::to_string(i + 1);
+    };
 
     // Grid nodes
     for (int a = 0; a < driftAxisCount; ++a)
@@ -319,8 +208,13 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
         }
         if (listed[a])
         {
+            // the rows span the declared range; with missing cases ('# missing:')
+            // an edge node may be absent, and the table covers what is there
             const auto& d = declared[a];
-            if (!sameNode(d.first, nodes.front()) || !sameNode(d.second, nodes.back()))
+            const bool spans = sameNode(d.first, nodes.front()) && sameNode(d.second, nodes.back());
+            const bool within = (sameNode(d.first, nodes.front()) || d.first < nodes.front())
+                             && (sameNode(d.second, nodes.back()) || d.second > nodes.back());
+            if (!(spans || (missingAllowed && within)))
             {
                 throw InputError(file, "header range " + axisNames[a], "declares [" + fmt(d.first) + ", "
                     + fmt(d.second) + "] but the rows span [" + fmt(nodes.front()) + ", " + fmt(nodes.back()) + "]");
@@ -357,10 +251,10 @@ DriftTable DriftTable::read(const std::filesystem::path& path, DriftTableOptions
         }
         if (seenAt[idx])
         {
-            throw InputError(file, line(r.line), "grid point duplicated (first at line "
-                + std::to_string(seenAt[idx]) + "): each combination of the axes must appear once");
+            throw InputError(file, where(r, std::size_t(&r - raw.data())), "grid point duplicated (first at "
+                + where(raw[seenAt[idx] - 1], seenAt[idx] - 1) + "): each combination of the axes must appear once");
         }
-        seenAt[idx] = r.line;
+        seenAt[idx] = int(&r - raw.data()) + 1;
         for (int v = 0; v < 3; ++v) t.values_[3*idx + v] = r.v[v];
     }
     if (raw.size() != n)

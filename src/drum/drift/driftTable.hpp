@@ -1,6 +1,7 @@
-// The CFD drift table (issue 6 contract "dryerDriftTable 1", written by
-// buildDriftTable from curtainFoam sweeps) read back with strict errors and
-// interpolated multilinearly on its rectilinear grid.
+// The CFD drift table (file format "dryerDriftTable 1", driftTableFile.hpp,
+// written from curtainFoam sweeps by buildDriftTable through writeDriftTable)
+// read back with strict errors and interpolated multilinearly on its
+// rectilinear grid.
 //
 // Axes, in contract order: gas velocity, spill rate, fall height, flight
 // length, particle density, particle diameter. Axes not listed on the
@@ -26,6 +27,7 @@
 #define DRUM_DRIFT_DRIFTTABLE_HPP
 
 #include "drum/drift/driftModel.hpp"
+#include "drum/drift/driftTableFile.hpp"
 
 #include <array>
 #include <atomic>
@@ -81,6 +83,11 @@ public:
     //- Read and check a table file; throws InputError naming the file, the
     //  line and the field for every defect (see driftTable.cpp)
     static DriftTable read(const std::filesystem::path& file, DriftTableOptions options = {});
+
+    //- The table of a file's contents (driftTableFile.hpp); `file` names it
+    //  in errors. Checks the header order, the ranges and the grid.
+    static DriftTable fromFile(const DriftTableFile& contents, const std::filesystem::path& file,
+                               DriftTableOptions options = {});
 
     //- Interpolated values at the query (incline is not a table axis); the
     //  out-of-range policy applies on every axis

@@ -2,12 +2,15 @@
 // interpolation coordinates, the ln-axis choice, out-of-range policies, the
 // fall-height anchor and every malformed-file error
 #include "drum/drift/driftTable.hpp"
+#include "drum/drift/driftTableFile.hpp"
+#include "drum/io/projectPaths.hpp"
 #include "drum/io/inputError.hpp"
 #include "syntheticTable.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <random>
 
 using namespace drum;
@@ -340,4 +343,84 @@ TEST(DriftTable, MissingPointsDeclaredInTheHeaderAreRefusedWhenNeeded)
     EXPECT_THROW(t.lookup(query({1.6, 2, 1, 1, 1200, 1e-4})), InputError);
     const synthetic::Point far{5, 20, 8, 2, 2650, 1e-3};
     EXPECT_NEAR(t.lookup(query(far)).drift, multilinear(far).drift, 1e-10);
+}
+
+
+// The one writer reproduces every shipped table byte for byte from what the
+// reader read: the format the sweeps wrote is the format of driftTableFile.hpp
+TEST(DriftTableFile, ShippedTablesRoundTripByteForByte)
+{
+    std::vector<fs::path> files;
+    for (const fs::path& dir : {defaultsDir()/"driftTables", defaultsDir()/"driftTables"/"materialTables"})
+    {
+        for (const auto& e : fs::directory_iterator(dir))
+        {
+            if (e.path().extension() == ".csv") files.push_back(e.path());
+        }
+    }
+    ASSERT_GE(files.size(), 6u);   // generic, Invicta, lab drums, three materials
+    for (const auto& f : files)
+    {
+        std::ifstream in(f, std::ios::binary);
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        EXPECT_EQ(driftTableText(readDriftTableFile(f)), text) << f;
+    }
+}
+
+
+// write -> read gives the same header and values (to the half unit of the
+// 6 or 8 significant digits written),
+// and the writer refuses, leaving nothing behind, what the reader would refuse
+TEST(DriftTableFile, WriteReadRoundTripAndRefusals)
+{
+    const fs::path src = tmpDir()/"roundTripSource.csv";
+    synthetic::write(src, synthetic::table(synthetic::defaultGrid(), multilinear));
+    const DriftTableFile in = readDriftTableFile(src);
+    const fs::path out = tmpDir()/"roundTrip.csv";
+    fs::remove(out);
+    writeDriftTableFile(in, out);
+    const DriftTableFile back = readDriftTableFile(out);
+    EXPECT_EQ(back.header, in.header);
+    ASSERT_EQ(back.rows.size(), in.rows.size());
+    for (std::size_t i = 0; i < in.rows.size(); ++i)
+    {
+        EXPECT_EQ(back.rows[i].caseName, in.rows[i].caseName);
+        for (int a = 0; a < 6; ++a)
+        {
+            EXPECT_NEAR(back.rows[i].x[a], in.rows[i].x[a], (a < 5 ? 5e-6 : 5e-8)*std::abs(in.rows[i].x[a]));
+        }
+        for (int v = 0; v < 3; ++v)
+        {
+            EXPECT_NEAR(back.rows[i].v[v], in.rows[i].v[v], 5e-8*std::abs(in.rows[i].v[v]));
+        }
+    }
+    // written twice: the same bytes
+    const fs::path again = tmpDir()/"roundTripAgain.csv";
+    writeDriftTableFile(back, again);
+    std::ifstream a(out, std::ios::binary), b(again, std::ios::binary);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(a)), std::istreambuf_iterator<char>()),
+              std::string((std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>()));
+
+    // a point missing without a '# missing:' line, a duplicated point, a bad case name
+    const fs::path bad = tmpDir()/"refused.csv";
+    fs::remove(bad);
+    DriftTableFile holed = in;
+    holed.rows.pop_back();
+    EXPECT_THROW(writeDriftTableFile(holed, bad), InputError);
+    DriftTableFile twice = in;
+    for (auto& r : twice.rows) r.line = 0;   // rows made in memory are named by position
+    twice.rows.back() = twice.rows.front();
+    try
+    {
+        writeDriftTableFile(twice, bad);
+        ADD_FAILURE() << "duplicated grid point written";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("duplicated (first at row 1)"), std::string::npos) << e.what();
+    }
+    DriftTableFile comma = in;
+    comma.rows.front().caseName = "a,b";
+    EXPECT_THROW(writeDriftTableFile(comma, bad), InputError);
+    EXPECT_FALSE(fs::exists(bad));
 }
