@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <map>
@@ -62,6 +63,7 @@ const char* usage =
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
+    "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
 
 struct Args
@@ -125,7 +127,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
-        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom", "sheetConstants"};
+        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom", "sheetConstants", "sizeClasses"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -144,6 +146,61 @@ fs::path defaultMaterials()
 {
     return drum::dataDir()/"windtunnel_materials.csv";
 }
+
+//- -sieveBottom UM: the lower bound given to the open bottom sieve bin (a
+//  stated sensitivity; default 37 um)
+drum::SieveClosure sieveClosure(const Args& a)
+{
+    drum::SieveClosure closure;
+    if (a.has("sieveBottom"))
+    {
+        const std::string text = a.get("sieveBottom");
+        const auto v = numberText(text);
+        if (!v || !(*v >= 1 && *v <= 73))
+        {
+            throw drum::InputError("", "-sieveBottom", "'" + text + "' um outside the allowed range [1, 73] "
+                                   "(the open bottom bin lies below the 74 um sieve)");
+        }
+        closure.bottomUm = *v;
+    }
+    return closure;
+}
+
+//- -sizeClasses MATERIAL: the material's size classes as every tool of the
+//  project represents them (Table A.1, open bins closed), for the sweep
+//  dictionaries (buildDriftTable's `sizeClasses material;`), 6 digits
+int sizeClasses(const Args& a)
+{
+    const std::string name = a.get("sizeClasses");
+    const fs::path matFile = a.get("materials", defaultMaterials().string());
+    const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
+    const auto it = materials.find(name);
+    if (it == materials.end())
+    {
+        std::string list;
+        for (const auto& kv : materials) list += (list.empty() ? "" : ", ") + kv.first;
+        throw drum::InputError(matFile.string(), "-sizeClasses", "unknown material '" + name + "'; the file has " + list);
+    }
+    std::vector<drum::SieveClass> classes = it->second.classes;   // ascending, as a sweep's axis
+    std::sort(classes.begin(), classes.end(),
+        [](const drum::SieveClass& x, const drum::SieveClass& y) { return x.diameter < y.diameter; });
+    const auto line = [&](const char* key, auto value)
+    {
+        std::cout << key << ":";
+        for (const auto& c : classes)
+        {
+            char buf[32];
+            std::snprintf(buf, sizeof buf, " %.6g", value(c));
+            std::cout << buf;
+        }
+        std::cout << "\n";
+    };
+    std::cout << "material: " << name << "\nparticleDensity: " << it->second.particleDensity << "\n";
+    line("diameter", [](const drum::SieveClass& c) { return c.diameter; });
+    line("massFractions", [](const drum::SieveClass& c) { return c.massFraction; });
+    return 0;
+}
+
 
 //- The items of a comma-separated option value ("a,b,c"); an empty item
 //  (",," or a trailing comma) is an InputError naming the option
@@ -247,20 +304,7 @@ int predict(const Args& a)
         throw drum::InputError("", "-model", "unknown model '" + model + "': valid names are " + list + "cfd");
     }
     const fs::path matFile = a.get("materials", defaultMaterials().string());
-    drum::SieveClosure closure;
-    if (a.has("sieveBottom"))
-    {
-        // the lower bound given to the open bottom sieve bin (a stated sensitivity)
-        const std::string text = a.get("sieveBottom");
-        const auto v = numberText(text);
-        if (!v || !(*v >= 1 && *v <= 73))
-        {
-            throw drum::InputError("", "-sieveBottom", "'" + text + "' um outside the allowed range [1, 73] "
-                                   "(the open bottom bin lies below the 74 um sieve)");
-        }
-        closure.bottomUm = *v;
-    }
-    const auto materials = drum::readWindTunnelMaterials(matFile, closure);
+    const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
     const auto tests = drum::readWindTunnelTests(testsFile, materials);
     // Sherritt's code and the reference predictions: air at 20 degC, Schiller-Naumann
     const particleDrag::Gas air = particleDrag::Gas::air(20);
@@ -463,6 +507,7 @@ int main(int argc, char** argv)
             std::cout << usage;
             return argc == 1 ? 1 : 0;
         }
+        if (a.has("sizeClasses")) return sizeClasses(a);
         if (a.has("fit")) return fit(a);
         if (a.has("score")) return score(a);
         return predict(a);
