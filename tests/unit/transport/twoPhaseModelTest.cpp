@@ -166,7 +166,7 @@ TEST(TwoPhaseModel, AxialSolveRelaxesToConstantHoldupInALongInclinedDrum)
     const double F0 = 0.015;
     const auto drum1 = m.solveConstantHoldup(F0).front();
     const auto drum3 = m.solveAxial(F0);
-    EXPECT_NEAR(drum3.profile.back().holdup*c.material.bulkDensity*c.drum.length, drum1.holdup_kg, 0.01*drum1.holdup_kg);
+    EXPECT_NEAR(drum3.profile.back().holdup*c.material.bulkDensity*c.drum.length, drum1.holdupMass, 0.01*drum1.holdupMass);
     EXPECT_NEAR(drum3.profile.back().bedSlope, 0.0, 1e-3);
 }
 
@@ -289,8 +289,8 @@ TEST(TwoPhaseModel, AxialSolveCarriesOverloadAndRefusesBeyondCapacity)
         EXPECT_LT(roots.front().dischargeAngle, pi) << F;
         const auto r = m.solveAxial(F);
         EXPECT_LT(r.dischargeAngle, pi) << F;
-        EXPECT_GT(r.holdup_kg, design.holdup*2.10*1517) << F;
-        EXPECT_LT(r.holdup_kg, full) << F;
+        EXPECT_GT(r.holdupMass, design.holdup*2.10*1517) << F;
+        EXPECT_LT(r.holdupMass, full) << F;
         EXPECT_FALSE(r.profile.back().slopeCapped) << F;
     }
     // far beyond what even the buried drum carries over the sweep: refused
@@ -309,7 +309,7 @@ TEST(TwoPhaseModel, AxialSolveCarriesOverloadAndRefusesBeyondCapacity)
     // only next to the discharge end, and the feed end relaxes to DRUM1
     const auto a = m.solveAxial(0.01);
     const auto b = m.solveAxial(0.02);
-    EXPECT_GT(b.holdup_kg, 1.2*a.holdup_kg);
+    EXPECT_GT(b.holdupMass, 1.2*a.holdupMass);
     for (const auto* r : {&a, &b})
     {
         EXPECT_LT(r->cappedLength, 0.1*2.10);

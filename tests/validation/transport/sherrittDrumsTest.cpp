@@ -73,6 +73,6 @@ TEST(SherrittDrums, KellyCountercurrentAirRaisesHoldup)
     c.gas = {0.02, 20, GasFlow::countercurrent};
     const auto air = TwoPhaseModel(c).solveConstantHoldup(F0).front();
     std::printf("Kelly EAD: holdup %.3f kg no air, %.3f kg countercurrent air; T %.0f / %.0f s\n",
-        still.holdup_kg, air.holdup_kg, still.meanResidenceTime, air.meanResidenceTime);
-    EXPECT_GT(air.holdup_kg, still.holdup_kg);
+        still.holdupMass, air.holdupMass, still.meanResidenceTime, air.meanResidenceTime);
+    EXPECT_GT(air.holdupMass, still.holdupMass);
 }

@@ -178,9 +178,9 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
         for (const auto& q : roots)
         {
             os << " theta_i " << q.dischargeAngle*180/pi << " deg (" << loadingRegimeName(q.regime)
-               << ", " << q.holdup_kg << " kg, airborne " << 100*q.airborne_fraction << " %);";
-            rootTable.addRow({q.dischargeAngle*180/pi, double(static_cast<int>(q.regime)), q.holdup_kg,
-                q.airborne_fraction, q.meanResidenceTime, q.airborneFlow, q.denseFlow});
+               << ", " << q.holdupMass << " kg, airborne " << 100*q.airborneFraction << " %);";
+            rootTable.addRow({q.dischargeAngle*180/pi, double(static_cast<int>(q.regime)), q.holdupMass,
+                q.airborneFraction, q.meanResidenceTime, q.airborneFlow, q.denseFlow});
         }
         say(os.str());
     }
@@ -284,8 +284,8 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
         "rtd_std_s", "rtd_skewness", "rtd_recovered", "exact_mean_s", "exact_std_s", "holdup_over_feed_s",
         "rtd_mean_s", "airborne_flow_kg_s", "dense_flow_kg_s", "discharge_angle_deg", "slices", "dense_dispersion_m2_s",
         "numerical_dispersion_m2_s", "capped_slope_length_m"};
-    std::vector<double> row = {r.holdup_kg, r.airborne_fraction, r.meanResidenceTime,
-        sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdup_kg/c.material.feedRate, sm.mean,
+    std::vector<double> row = {r.holdupMass, r.airborneFraction, r.meanResidenceTime,
+        sm.sd(), sm.skewness, recovered, ex.mean, ex.sd(), r.holdupMass/c.material.feedRate, sm.mean,
         r.airborneFlow, r.denseFlow, r.dischargeAngle*180/pi, double(net.slices), to.denseDispersion,
         net.numericalDenseDispersion, r.cappedLength};
     const std::optional<RtdMoments> mm = writeSummary(cols, row, measured, out);
@@ -321,7 +321,7 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
         plotIfPossible(ph, out/"profile.png");
     }
     std::ostringstream os;
-    os << std::setprecision(4) << "holdup " << r.holdup_kg << " kg, airborne " << 100*r.airborne_fraction
+    os << std::setprecision(4) << "holdup " << r.holdupMass << " kg, airborne " << 100*r.airborneFraction
        << " %, mean residence time " << r.meanResidenceTime/60 << " min (Eq 138; network "
        << ex.mean/60 << "), RTD SD " << sm.sd()/60 << " min";
     os << measuredNote(mm);

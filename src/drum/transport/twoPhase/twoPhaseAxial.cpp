@@ -210,8 +210,8 @@ TwoPhaseResult TwoPhaseModel::solveAxial(double feedRate, const AxialOptions& op
     }
 
     const double intH = y[1];
-    r.holdup_kg = rhoB*intH;
-    r.airborne_fraction = y[2]/intH;
+    r.holdupMass = rhoB*intH;
+    r.airborneFraction = y[2]/intH;
     r.meanResidenceTime = rhoB*intH/feedRate;  // Eq 138 with Eq 137
     r.denseFlow = y[3]/L;
     r.airborneFlow = feedRate - r.denseFlow;

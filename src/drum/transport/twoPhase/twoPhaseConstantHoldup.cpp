@@ -79,8 +79,8 @@ TwoPhaseResult TwoPhaseModel::constantResult(const TwoPhaseState& s) const
     const double rhoB = case_.material.bulkDensity;
     TwoPhaseResult r;
     r.feedRate = s.feedRate;
-    r.holdup_kg = s.holdup*rhoB*L;
-    r.airborne_fraction = s.airborneHoldup/s.holdup;
+    r.holdupMass = s.holdup*rhoB*L;
+    r.airborneFraction = s.airborneHoldup/s.holdup;
     r.meanResidenceTime = s.holdup*L*rhoB/s.feedRate;  // Eq 138
     for (std::size_t i = 0; i < xf_.size(); ++i)
     {

@@ -85,8 +85,8 @@ struct TwoPhaseProfilePoint
 struct TwoPhaseResult
 {
     double feedRate = 0;                  //!< F_0, kg/s
-    double holdup_kg = 0;                 //!< solids in the flighted length, kg
-    double airborne_fraction = 0;         //!< H_1/H (length averaged)
+    double holdupMass = 0;                  //!< solids in the flighted length, kg
+    double airborneFraction = 0;          //!< H_1/H (length averaged)
     double meanResidenceTime = 0;         //!< T, s (Eq 138)
     std::vector<double> sizeResidenceTimes;  //!< T_i, s (Eqs 139/140)
     std::vector<double> holdupFractions;  //!< x_d,i (length averaged by holdup)
