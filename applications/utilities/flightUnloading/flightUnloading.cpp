@@ -5,6 +5,7 @@
 //
 // Usage: flightUnloading -dict FILE [-out DIR]
 #include "drum/flights/flightDictionary.hpp"
+#include "drum/numerics/constants.hpp"
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/gnuplot.hpp"
@@ -102,8 +103,8 @@ drum::Plot crossSectionPlot(const drum::FlightCase& c, const drum::UnloadingMode
     drum::PlotSeries wall{"drum wall", {}, {}, "lines lw 2 lc rgb 'black'"};
     for (int i = 0; i <= 360; ++i)
     {
-        wall.x.push_back(R*std::sin(i*M_PI/180.0));
-        wall.y.push_back(-R*std::cos(i*M_PI/180.0));
+        wall.x.push_back(R*std::sin(i*drum::pi/180.0));
+        wall.y.push_back(-R*std::cos(i*drum::pi/180.0));
     }
     p.series.push_back(wall);
     drum::PlotSeries flights{"flights", {}, {}, "lines lw 2 lc rgb '#404040'"};
@@ -121,7 +122,7 @@ drum::Plot crossSectionPlot(const drum::FlightCase& c, const drum::UnloadingMode
     p.series.push_back(flights);
     // Surface line of the reference flight and its vertical fall path
     const Eigen::Vector2d tip = f.tipPosition(c.snapshotAngleDeg);
-    const double phi = c.phiDeg*M_PI/180.0;
+    const double phi = c.phiDeg*drum::pi/180.0;
     drum::PlotSeries surf{"surface of the reference flight (phi)", {}, {},
                           "lines lw 1.5 lc rgb '#d62728'"};
     for (double t : {-0.6, 0.6})

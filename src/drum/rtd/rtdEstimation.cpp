@@ -1,4 +1,5 @@
 #include "drum/rtd/rtdEstimation.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
@@ -109,7 +110,7 @@ double normalQuantile(double p)
         x = -(((((c[0]*q + c[1])*q + c[2])*q + c[3])*q + c[4])*q + c[5])/((((d[0]*q + d[1])*q + d[2])*q + d[3])*q + 1);
     }
     const double e = 0.5*std::erfc(-x/std::sqrt(2.0)) - p;
-    const double u = e*std::sqrt(2*M_PI)*std::exp(x*x/2);
+    const double u = e*std::sqrt(2*pi)*std::exp(x*x/2);
     return x - u/(1 + x*u/2);
 }
 

@@ -1,4 +1,5 @@
 #include "drum/transport/compartment/compartmentLeeDryer.hpp"
+#include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
 
@@ -23,7 +24,7 @@ std::vector<LeeSliceData> leeSliceData
     requirePositive(d.designLoadMultiplier, "design load multiplier");
 
     const double dL = d.length/n;
-    const double sinTheta = std::sin(d.slopeDeg*3.14159265358979323846/180.0);
+    const double sinTheta = std::sin(d.slopeDeg*pi/180.0);
     std::vector<LeeSliceData> out;
     out.reserve(n);
     for (int i = 1; i <= n; ++i)

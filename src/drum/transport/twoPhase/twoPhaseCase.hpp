@@ -10,6 +10,7 @@
 #define DRUM_TRANSPORT_TWOPHASECASE_HPP
 
 #include "drum/drift/driftModel.hpp"
+#include "drum/numerics/constants.hpp"
 #include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 #include "drum/transport/twoPhase/twoPhaseSurfaceClosure.hpp"
 
@@ -71,10 +72,10 @@ struct TwoPhaseOptions
     bool geometricWallFall = false;
 
     //- Lowest discharge angle searched (the code's DRUM1 sweep starts at 40 deg)
-    double minDischargeAngle = 40*3.14159265358979323846/180;
+    double minDischargeAngle = 40*pi/180;
 
     //- Sweep step for root bracketing [rad]
-    double sweepStep = 3.14159265358979323846/360;
+    double sweepStep = pi/360;
 
     //- RK4 steps along the drum (axial solve)
     int axialSteps = 200;
