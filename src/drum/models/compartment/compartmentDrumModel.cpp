@@ -99,21 +99,13 @@ CompartmentSettings readSettings(const DrumCase& c)
         const YAML::Node ps = e["parameters"];
         if (!ps || !ps.IsSequence() || ps.size() == 0)
         {
-            throw InputError(file, "estimation.parameters",
-                "a list from: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier");
+            std::string allowed;
+            for (const auto& p : leeEstimationParameters()) allowed += (allowed.empty() ? "" : ", ") + p.entry;
+            throw InputError(file, "estimation.parameters", "a list from: " + allowed);
         }
         for (const auto& q : ps)
         {
-            std::string n = q.as<std::string>();
-            if (n == "forwardDragFactor") n = "dragFactor";
-            if (n != "kilnTime" && n != "backFraction" && n != "dragFactor" && n != "forwardShare"
-             && n != "designLoadMultiplier" && n != "stagnantRatio" && n != "exchangeTime")
-            {
-                throw InputError(file, "estimation.parameters", "unknown parameter '" + n
-                    + "'; allowed: kilnTime, backFraction, forwardDragFactor, forwardShare, designLoadMultiplier, "
-                      "stagnantRatio, exchangeTime");
-            }
-            s.estimate.push_back(n);
+            s.estimate.push_back(leeEstimationParameter(q.as<std::string>(), "estimation.parameters", file).name);
         }
         s.starts = r.integer(e, "estimation", "starts", 1, 100, 4);
         s.logObjective = r.word(e, "estimation", "objective", {"linear", "log"}, std::string("linear")) == "log";
@@ -366,13 +358,12 @@ void CompartmentDrumModel::run(const fs::path& out) const
         std::vector<FitParameter> fp;
         for (const std::string& n : s_.estimate)
         {
-            if (n == "kilnTime") fp.push_back({n, s_.lee.kilnTime, 0.01, 1e30});
-            else if (n == "backFraction") fp.push_back({n, s_.lee.backFraction, 0.0, 1.0});
-            else if (n == "dragFactor") fp.push_back({n, s_.lee.dragFactor, 0.0, 100.0});
-            else if (n == "forwardShare") fp.push_back({n, 0.5, 0.0, 1.0});
-            else if (n == "stagnantRatio") fp.push_back({n, s_.stagnant.massRatio, 0.0, 10.0});
-            else if (n == "exchangeTime") fp.push_back({n, s_.stagnant.exchangeTime, 1.0, 1e6});
-            else fp.push_back({n, s_.designLoadMultiplier, 0.05, 20.0});
+            const LeeEstimationParameter& q = leeEstimationParameter(n, "estimation.parameters");
+            const double initial = n == "kilnTime" ? s_.lee.kilnTime : n == "backFraction" ? s_.lee.backFraction
+                : n == "dragFactor" ? s_.lee.dragFactor : n == "forwardShare" ? 0.5
+                : n == "stagnantRatio" ? s_.stagnant.massRatio : n == "exchangeTime" ? s_.stagnant.exchangeTime
+                : s_.designLoadMultiplier;
+            fp.push_back({n, initial, q.lower, q.upper});
         }
         const RtdObjective objective{s_.logObjective, s_.logOffset};
         const StagnantExchange stagnant0{s_.stagnant.massRatio, s_.stagnant.exchangeTime};

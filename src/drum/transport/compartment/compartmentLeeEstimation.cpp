@@ -24,6 +24,34 @@ StagnantExchange stagnantFrom
     return z;
 }
 
+const std::vector<LeeEstimationParameter>& leeEstimationParameters()
+{
+    static const std::vector<LeeEstimationParameter> list = {
+        {"kilnTime", "kilnTime", 0.01, 1e30},               // t_kiln, s
+        {"backFraction", "backFraction", 0.0, 1.0},         // C_B
+        {"dragFactor", "forwardDragFactor", 0.0, 100.0},    // C_F^G (Eq 3.8)
+        {"forwardShare", "forwardShare", 0.0, 1.0},         // s of leeParametersFrom
+        {"designLoadMultiplier", "designLoadMultiplier", 0.05, 20.0},
+        {"stagnantRatio", "stagnantRatio", 0.0, 10.0},      // M_s/M_p
+        {"exchangeTime", "exchangeTime", 1.0, 1e6},         // s
+    };
+    return list;
+}
+
+
+const LeeEstimationParameter& leeEstimationParameter(const std::string& entry, const std::string& where,
+                                                     const std::string& file)
+{
+    std::string allowed;
+    for (const auto& p : leeEstimationParameters())
+    {
+        if (p.entry == entry || p.name == entry) return p;
+        allowed += (allowed.empty() ? "" : ", ") + p.entry;
+    }
+    throw InputError(file, where, "unknown parameter '" + entry + "'; allowed: " + allowed);
+}
+
+
 double leeMaxForwardFraction0(const LeeDryer& dryer, const int n)
 {
     double cf0 = 0;
@@ -77,14 +105,7 @@ PredictionModel leeRtdModel
 {
     for (const std::string& nm : names)
     {
-        if (nm != "kilnTime" && nm != "backFraction" && nm != "dragFactor"
-         && nm != "forwardShare" && nm != "designLoadMultiplier"
-         && nm != "stagnantRatio" && nm != "exchangeTime")
-        {
-            throw InputError("", "estimation parameter " + nm,
-                "unknown; allowed: kilnTime, backFraction, dragFactor, forwardShare, designLoadMultiplier, "
-                "stagnantRatio, exchangeTime");
-        }
+        leeEstimationParameter(nm, "estimation parameter " + nm);
     }
     return [=](const std::vector<double>& v)
     {

@@ -14,6 +14,24 @@
 namespace drum
 {
 
+//- One parameter Lee's model can be fitted in: its name in the fit (and in
+//  estimation.csv), the drumDict entry a user lists in estimation.parameters,
+//  and the box bounds of the fit
+struct LeeEstimationParameter
+{
+    std::string name;       //!< kilnTime, backFraction, dragFactor, ...
+    std::string entry;      //!< model entry it stands for (forwardShare: none, "forwardShare")
+    double lower, upper;
+};
+
+//- Every fittable parameter, the one list the reader, the fit and the model use
+const std::vector<LeeEstimationParameter>& leeEstimationParameters();
+
+//- The parameter listed as `entry` in estimation.parameters (its drumDict
+//  name, or its fit name); InputError naming `where` and the allowed names
+const LeeEstimationParameter& leeEstimationParameter(const std::string& entry, const std::string& where,
+                                                     const std::string& file = "");
+
 //- Largest C_F^0 = maf_h sin(theta)/(L/N) over the slices (Eq 3.7)
 double leeMaxForwardFraction0(const LeeDryer& dryer, int nSlices);
 
