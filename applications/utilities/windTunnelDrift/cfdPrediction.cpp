@@ -232,6 +232,16 @@ std::map<int, double> cfdPredictions
         if (!o.turbulence.empty()) cmd << " -turbulence " << o.turbulence;
         if (!o.wakeShare.empty()) cmd << " -wakeShare " << quote(o.wakeShare);
         if (!o.releaseVelocity.empty()) cmd << " -releaseVelocity " << quote(o.releaseVelocity);
+        if (o.layerThickness == "packed")
+        {
+            const double v = o.releaseVelocity.empty() ? 1.0 : std::stod(o.releaseVelocity);
+            const double packing = std::min(m.bulkDensity/m.particleDensity, 0.5);
+            cmd << " -layerThickness " << t.spillRate/(packing*m.particleDensity*v);
+        }
+        else if (!o.layerThickness.empty())
+        {
+            cmd << " -layerThickness " << quote(o.layerThickness);
+        }
         if (o.keep) cmd << " -keep";
         r.cmd = cmd.str();
     }

@@ -29,6 +29,11 @@ struct CfdOptions
     std::string turbulence;          //!< curtainCase -turbulence (empty: the template's gas model)
     std::string wakeShare;           //!< curtainCase -wakeShare (empty: its default; checked there)
     std::string releaseVelocity;     //!< curtainCase -releaseVelocity (empty: the template's)
+    //! curtainCase -layerThickness: empty (the template's 0.05 m), a value in m, or "packed":
+    //! per row the layer that carries the spill at the bulk density and the release velocity,
+    //! b = S/(rho_b v), thickened where that would exceed a solids fraction of 0.5 at the slot
+    //! (the pressureless solids cannot be released near packing)
+    std::string layerThickness;
     //! how a row's advance is measured: "sherritt" (the tunnel's collection rule on the
     //! landing distribution, scoring/tunnelCollection.hpp) or "landed" (the mean
     //! drift of what crossed the floor plane; a class that never lands fails the row)

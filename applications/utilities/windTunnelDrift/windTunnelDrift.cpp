@@ -58,6 +58,7 @@ const char* usage =
     "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
     "               [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V] [-sieveBottom UM]\n"
+    "               [-layerThickness packed|B]\n"
     "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
@@ -127,7 +128,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
-        "turbulence", "wakeShare", "releaseVelocity", "sieveBottom", "sheetConstants", "sizeClasses"};
+        "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -347,6 +348,16 @@ int predict(const Args& a)
         o.turbulentDispersion = named("turbulentDispersion", {"none", "gradientDiffusion"});
         o.wakeShare = a.get("wakeShare");
         o.releaseVelocity = a.get("releaseVelocity");
+        o.layerThickness = a.get("layerThickness");
+        if (!o.layerThickness.empty() && o.layerThickness != "packed" && !numberText(o.layerThickness))
+        {
+            throw drum::InputError("", "-layerThickness", "'" + o.layerThickness
+                + "': packed, or a thickness in m (curtainCase checks its range)");
+        }
+        if (!o.releaseVelocity.empty() && !numberText(o.releaseVelocity))
+        {
+            throw drum::InputError("", "-releaseVelocity", "'" + o.releaseVelocity + "' is not a number (m/s)");
+        }
         if (!o.wakeShare.empty() && o.particleTurbulence != "SimoninCrowe")
         {
             throw drum::InputError("", "-wakeShare", "an entry of -particleTurbulence SimoninCrowe only");
