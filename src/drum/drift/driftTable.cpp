@@ -20,39 +20,13 @@ const std::array<std::string, driftAxisCount> axisNames{{
     "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m",
     "flight_length_m", "particle_density_kg_m3", "particle_diameter_m"}};
 
+using namespace driftTableParse;
+
 constexpr double nodeTol = 1e-9;   // relative: two printed values are one node
 
 bool sameNode(double a, double b)
 {
     return std::abs(a - b) <= nodeTol*std::max({1e-300, std::abs(a), std::abs(b)});
-}
-
-std::vector<std::string> words(const std::string& s)
-{
-    std::istringstream is(s);
-    std::vector<std::string> out;
-    std::string w;
-    while (is >> w) out.push_back(w);
-    return out;
-}
-
-std::string line(int n)
-{
-    return "line " + std::to_string(n);
-}
-
-double number(const std::string& text, const std::string& file, const std::string& entry)
-{
-    try
-    {
-        std::size_t used = 0;
-        const double v = std::stod(text, &used);
-        if (used == text.size() && std::isfinite(v)) return v;
-    }
-    catch (const std::exception&)
-    {
-    }
-    throw InputError(file, entry, "'" + text + "' is not a finite number");
 }
 
 std::string fmt(double v)

@@ -15,6 +15,8 @@ namespace drum
 namespace
 {
 
+using namespace driftTableParse;
+
 const std::vector<std::string> columns{
     "case", "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m", "flight_length_m",
     "particle_density_kg_m3", "particle_diameter_m", "vc_over_vg", "drift_m", "captured_fraction"};
@@ -36,6 +38,19 @@ std::vector<std::string> split(const std::string& s, char sep)
     if (!s.empty() && s.back() == sep) out.push_back("");
     return out;
 }
+
+std::string printed(const char* format, double v)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+} // namespace
+
+
+namespace driftTableParse
+{
 
 std::vector<std::string> words(const std::string& s)
 {
@@ -65,16 +80,7 @@ double number(const std::string& text, const std::string& file, const std::strin
     throw InputError(file, entry, "'" + text + "' is not a finite number");
 }
 
-
-
-std::string printed(const char* format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
-} // namespace
+} // namespace driftTableParse
 
 
 const std::vector<std::string>& driftTableColumns()

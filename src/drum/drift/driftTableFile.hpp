@@ -34,6 +34,15 @@
 namespace drum
 {
 
+//- Text helpers the reader and DriftTable share
+namespace driftTableParse
+{
+std::vector<std::string> words(const std::string& s);      //!< whitespace-separated words
+std::string line(int n);                                    //!< "line n"
+//- A whole finite number; InputError naming file and entry otherwise
+double number(const std::string& text, const std::string& file, const std::string& entry);
+}
+
 //- The data columns, in order
 const std::vector<std::string>& driftTableColumns();
 
