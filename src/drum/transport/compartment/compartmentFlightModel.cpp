@@ -52,9 +52,7 @@ std::vector<LeeSliceData> flightModelSliceData
     for (int i = 1; i <= n; ++i)
     {
         LeeSliceData s{};
-        s.phiDeg = d.constantPhiDeg
-          ? *d.constantPhiDeg
-          : leeSugarAngleOfRepose(leeMoistureProfile(d.moistureInlet, d.moistureOutlet, i, n));
+        s.phiDeg = leeSliceReposeDeg(d, i, n);
         const LeeFlight flight(g, s.phiDeg);
         const UnloadingModel um(flight, us);
 

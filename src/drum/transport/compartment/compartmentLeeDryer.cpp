@@ -8,6 +8,15 @@
 namespace drum
 {
 
+double leeSliceReposeDeg(const LeeDryer& d, int i, int n)
+{
+    // Dryer Model: phi_i = 1222.2 w_i + 34.5 (Eqs 7.2-7.3)
+    return d.constantPhiDeg
+        ? *d.constantPhiDeg
+        : leeSugarAngleOfRepose(leeMoistureProfile(d.moistureInlet, d.moistureOutlet, i, n));
+}
+
+
 std::vector<LeeSliceData> leeSliceData
 (
     const LeeDryer& d,
@@ -30,10 +39,7 @@ std::vector<LeeSliceData> leeSliceData
     for (int i = 1; i <= n; ++i)
     {
         LeeSliceData s{};
-        // Dryer Model: phi_i = 1222.2 w_i + 34.5 (Eqs 7.2-7.3)
-        s.phiDeg = d.constantPhiDeg
-          ? *d.constantPhiDeg
-          : leeSugarAngleOfRepose(leeMoistureProfile(d.moistureInlet, d.moistureOutlet, i, n));
+        s.phiDeg = leeSliceReposeDeg(d, i, n);
         s.correlations = leeCorrelations(d.geometry, s.phiDeg, d.fLoad, d.rpm, d.bulkDensity);
         s.slice.designLoad = d.designLoadMultiplier*s.correlations.designLoadPerLength*dL;
         s.slice.passiveTime = s.correlations.passiveTime;

@@ -52,6 +52,10 @@ struct LeeSliceData
 //  code line C_x = C_x_g maf_h sin(theta)/(L/N))
 std::vector<LeeSliceData> leeSliceData(const LeeDryer& dryer, int nSlices, const LeeParameters& p);
 
+//- Kinetic angle of repose of slice i of n (1-based), deg: the dryer's
+//  constant phi, or Lee's sugar phi from the moisture profile (Eqs 7.2-7.3)
+double leeSliceReposeDeg(const LeeDryer& dryer, int i, int nSlices);
+
 //- The network of Lee's Dryer Model
 CompartmentNetwork leeNetwork(const LeeDryer& dryer, int nSlices, const LeeParameters& p);
 
