@@ -3,6 +3,7 @@
 #include "drum/io/atomicFile.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/io/yamlInput.hpp"
 #include "drum/numerics/constants.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
@@ -34,7 +35,7 @@ CompartmentSettings readSettings(const DrumCase& c)
     const YAML::Node mo = r.section(c.root, "model");
     r.only(mo, "model", {"type", "slices", "partition", "kilnTime", "backFraction", "forwardDragFactor",
                          "designLoadMultiplier", "stagnantRatio", "exchangeTime", "denseDispersion",
-                         "dispersionBed", "subtractNumericalDispersion", "drift"});
+                         "dispersionBed", "subtractNumericalDispersion", "drift", "kilnBedSlope_deg"});
     if (!c.flights.twoSection)
     {
         throw InputError(file, "flights.exterior", "model compartment needs the two-section flight entries "
@@ -57,7 +58,30 @@ CompartmentSettings readSettings(const DrumCase& c)
             r.refuse(mo, "model", k, "by partition flightModel (the flight model gives the forward and back shares)");
         }
     }
-    s.lee.kilnTime = r.number(mo, "model", "kilnTime", 0, 1e300, 9.28, true);
+    if (mo["kilnTime"] && mo["kilnTime"].IsScalar() && mo["kilnTime"].Scalar() == "saeman")
+    {
+        // the kilning bed from physics: no kiln time to give or fit
+        s.saemanKiln = true;
+        s.lee.kilnTime = std::numeric_limits<double>::infinity();
+        s.kilnBedSlopeDeg = r.number(mo, "model", "kilnBedSlope_deg", -10, 10, 0.0);
+    }
+    else
+    {
+        r.refuse(mo, "model", "kilnBedSlope_deg", "without model.kilnTime saeman");
+        if (const YAML::Node k = mo["kilnTime"])
+        {
+            try
+            {
+                yamlNumber(k, "model.kilnTime", file);
+            }
+            catch (const InputError&)
+            {
+                throw InputError(fileLine(file, k), "model.kilnTime", "'" + (k.IsScalar() ? k.Scalar() : std::string("?"))
+                    + "': a time in s, range (0, 1e+300], or saeman (the rolling bed of Sherritt 1991 Eq 22)");
+            }
+        }
+        s.lee.kilnTime = r.number(mo, "model", "kilnTime", 0, 1e300, 9.28, true);
+    }
     s.lee.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);
     s.lee.dragFactor = r.number(mo, "model", "forwardDragFactor", 0, 100, 1.0);
     s.designLoadMultiplier = r.number(mo, "model", "designLoadMultiplier", 0, 100, 1.0, true);
@@ -90,6 +114,11 @@ CompartmentSettings readSettings(const DrumCase& c)
         if (!lee)
         {
             throw InputError(file, "estimation", "only for model.type compartment with partition leeCorrelations");
+        }
+        if (s.saemanKiln)
+        {
+            throw InputError(file, "estimation", "not with model.kilnTime saeman (the fit is Lee's network "
+                "with one t_kiln); give kilnTime a value to estimate");
         }
         if (s.dispersion.kind != "none")
         {
@@ -197,6 +226,23 @@ void CompartmentDrumModel::runWith
     }
     std::vector<CompartmentSlice> slices;
     for (const auto& s : data) slices.push_back(s.slice);
+    if (s_.saemanKiln)
+    {
+        // each slice's kiln mass rolls as Saeman's bed (Sherritt 1991 Eq 22) at its own phi
+        for (std::size_t i = 0; i < slices.size(); ++i)
+        {
+            SaemanKiln k;
+            k.drumDiameter = c_.drum.diameter;
+            k.speed = c_.drum.speedRpm/60;
+            k.bulkDensity = dryer.bulkDensity;
+            k.drumSlope = c_.drum.slopeDeg*deg;
+            k.bedSlope = s_.kilnBedSlopeDeg*deg;
+            k.repose = data[i].phiDeg*deg;
+            slices[i].saemanKiln = k;
+            slices[i].length = c_.drum.length/s_.slices;
+        }
+        say("kilning from the rolling-bed equation (Sherritt 1991 Eq 22), no kiln time");
+    }
     const CompartmentNetwork net(slices, dryer.feedRate, p.kilnTime);
     say("steady state of " + std::to_string(s_.slices) + " slices");
     const CompartmentSteadyState st = net.steadyState();
@@ -249,6 +295,9 @@ void CompartmentDrumModel::runWith
               + " faces the slicing's kilning step alone disperses the bed more than D_z");
         }
     }
+    // with the rolling bed, the kiln time its flows imply (kiln mass over kilning flow)
+    const double kilnTime = s_.saemanKiln
+        ? (st.kilnFlow.sum() > 0 ? st.kilnMass.sum()/st.kilnFlow.sum() : nan) : p.kilnTime;
     const double stagnantKg = stagnant.massRatio*st.passiveMass.sum();
     const double holdup = st.totalHoldup() + stagnantKg;
 
@@ -286,7 +335,7 @@ void CompartmentDrumModel::runWith
     for (const auto& s : data) design += s.slice.designLoad;
     std::vector<double> row = {holdup, st.activeMass.sum()/holdup, sm.mean, sm.sd(), sm.skewness,
         rtd.recovered, ex.mean, ex.sd(), holdup/c_.material.feedRate, design, st.kilnMass.sum(),
-        p.kilnTime,
+        kilnTime,
         s_.partition == "flightModel" ? data[0].slice.backFraction : p.backFraction,
         s_.partition == "flightModel" ? nan : p.dragFactor, double(s_.slices),
         stagnantKg, stagnant.massRatio > 0 ? stagnant.exchangeTime : nan,

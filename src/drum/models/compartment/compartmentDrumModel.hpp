@@ -27,6 +27,10 @@ struct CompartmentSettings
     std::string partition = "leeCorrelations";     //!< leeCorrelations | flightModel
     LeeParameters lee{9.28, 0.0, 1.0};              //!< kilnTime, backFraction, forwardDragFactor
     double designLoadMultiplier = 1;
+    //- model.kilnTime saeman: each slice's kilning from its rolling bed
+    //  (Sherritt 1991 Eq 22) instead of one t_kiln; kilnBedSlope_deg its gamma
+    bool saemanKiln = false;
+    double kilnBedSlopeDeg = 0;
     StagnantExchange stagnant{0.0, 600.0};          //!< stagnantRatio, exchangeTime
     DenseDispersionEntry dispersion;
     std::string dispersionBed = "kiln";             //!< kiln | passive

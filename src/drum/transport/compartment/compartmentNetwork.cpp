@@ -36,6 +36,10 @@ CompartmentNetwork::CompartmentNetwork
         requirePositive(s.designLoad, "design load" + at + " (kg)");
         requirePositive(s.passiveTime, "passive time" + at + " (s)");
         requirePositive(s.activeTime, "active (fall) time" + at + " (s)");
+        if (s.saemanKiln)
+        {
+            requirePositive(s.length, "slice length" + at + " (m, for its rolling bed)");
+        }
         requireInRange(s.forwardFraction, 0.0, 1.0, "forward fraction C_F" + at);
         requireInRange(s.backFraction, 0.0, 1.0, "backmix fraction C_B" + at);
         if (s.forwardFraction + s.backFraction > 1.0 + 1e-12)
@@ -75,6 +79,10 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
         {
             mp = target*s.passiveTime/s.forwardFraction;
         }
+        else if (s.saemanKiln)
+        {
+            mp = s.designLoad + saemanKilnMass(*s.saemanKiln, s.length, target - linearMax);
+        }
         else if (kilns)
         {
             mp = s.designLoad + (target - linearMax)*kilnTime_;
@@ -89,7 +97,8 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
         const double release = std::min(mp, s.designLoad)/s.passiveTime;  // Eq 3.2
         st.passiveMass(i) = mp;
         st.kilnMass(i) = std::max(mp - s.designLoad, 0.0);
-        st.kilnFlow(i) = kilns ? st.kilnMass(i)/kilnTime_ : 0.0;
+        st.kilnFlow(i) = s.saemanKiln ? std::max(target - linearMax, 0.0)   // the bed carries the rest
+                       : kilns ? st.kilnMass(i)/kilnTime_ : 0.0;
         st.releaseFlow(i) = release;
         // Active balance at steady state: M_a/t_a = F_a
         st.activeMass(i) = release*s.activeTime;
@@ -118,7 +127,8 @@ Eigen::VectorXd CompartmentNetwork::massRates(const Eigen::VectorXd& m) const
         const double ma = m(activeIndex(i));
         // Passive v4.0: F_a = m_pas/t_pas, F_k_out = m_kiln/t_kiln
         const double fa = std::min(mp, s.designLoad)/s.passiveTime;
-        const double fk = std::isfinite(kilnTime_) ? std::max(mp - s.designLoad, 0.0)/kilnTime_ : 0.0;
+        const double fk = s.saemanKiln ? saemanKilnFlow(*s.saemanKiln, s.length, std::max(mp - s.designLoad, 0.0))
+                        : std::isfinite(kilnTime_) ? std::max(mp - s.designLoad, 0.0)/kilnTime_ : 0.0;
         // Active v4.0: F_x + F_r + F_b = m/t_act
         const double out = ma/s.activeTime;
         const double fx = s.forwardFraction*out;

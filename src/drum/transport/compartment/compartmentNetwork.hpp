@@ -5,6 +5,7 @@
 //
 //   release    P_i -> A_i      F_a = min(M_p, M_des)/t_p           (Eq 3.2)
 //   kilning    P_i -> P_{i+1}  F_k = max(M_p - M_des, 0)/t_kiln    (code law, errata 8)
+//                              or, per slice, the rolling bed of that mass (Sherritt 1991 Eq 22)
 //   return     A_i -> P_i      F_r = C_R M_a/t_a
 //   forward    A_i -> P_{i+1}  F_x = C_F M_a/t_a                   (Eqs 3.7-3.8)
 //   backmix    A_i -> P_{i-1}  F_b = C_B M_a/t_a ;  C_R + C_F + C_B = 1
@@ -15,8 +16,10 @@
 #define DRUM_TRANSPORT_COMPARTMENTNETWORK_HPP
 
 #include "drum/rtd/tracerSystem.hpp"
+#include "drum/transport/kilnBed.hpp"
 
 #include <Eigen/Dense>
+#include <optional>
 #include <vector>
 
 namespace drum
@@ -30,6 +33,11 @@ struct CompartmentSlice
     double activeTime;      //!< t_a: mean fall time, s
     double forwardFraction; //!< C_F: share of the curtain landing in the next slice
     double backFraction;    //!< C_B: share pushed back into the previous slice
+    //- Kilning from the rolling-bed equation (Sherritt 1991 Eq 22, kilnBed.hpp)
+    //  instead of Lee's F_k = M_kiln/t_kiln: the kiln mass is this slice's
+    //  bed of length `length`
+    std::optional<SaemanKiln> saemanKiln = std::nullopt;
+    double length = 0;      //!< slice length, m (with saemanKiln)
 };
 
 //- Steady state of the network: holdups and flows along the drum (slice 1 = feed end)
@@ -63,7 +71,8 @@ struct StagnantExchange
 class CompartmentNetwork
 {
 public:
-    //- feedRate in kg/s; kilnTime t_kiln in s (may be +inf: no kilning).
+    //- feedRate in kg/s; kilnTime t_kiln in s (may be +inf: no kilning, or
+    //  kilning only in the slices with a saemanKiln).
     //  Throws InputError for negative times, fractions outside [0,1] or
     //  C_F + C_B > 1.
     CompartmentNetwork(std::vector<CompartmentSlice> slices, double feedRate, double kilnTime);
