@@ -79,4 +79,56 @@ double saemanKilnFlow(const SaemanKiln& k, double dz, double kilnMass)
     return saemanBedFlow(k, fillAngle(k.drumDiameter, kilnMass/(k.bulkDensity*dz)));
 }
 
+double bedDepth(double D, double beta)
+{
+    return 0.5*D*(1 - std::cos(0.5*beta));
+}
+
+
+namespace
+{
+
+// Eq 22 with gamma from the depths, no checks (may be <= 0)
+double profileFlow(const SaemanKiln& k, double dz, double beta, double nextDepth)
+{
+    const double D = k.drumDiameter;
+    const double gamma = (bedDepth(D, beta) - nextDepth)/dz;
+    const double s = std::sin(0.5*std::min(std::max(beta, 0.0), pi));
+    return pi*k.speed*D*D*D*k.bulkDensity/6*(k.drumSlope + gamma*std::cos(k.repose))/std::sin(k.repose)*s*s*s;
+}
+
+} // namespace
+
+
+double saemanKilnMass(const SaemanKiln& k, double dz, double flow, double nextDepth)
+{
+    SaemanKiln level = k;
+    level.bedSlope = 0;
+    saemanFlowScale(level);   // checks the drum, bed and angle
+    if (!(flow > 0)) return 0;
+    if (profileFlow(k, dz, pi, nextDepth) < flow)
+    {
+        std::ostringstream os;
+        os << "the rolling bed cannot carry " << flow << " kg/s: Eq 22 with the bed slope to the next slice gives at "
+           << "most " << profileFlow(k, dz, pi, nextDepth) << " kg/s (half fill)";
+        throw InputError("", "kiln bed", os.str());
+    }
+    // the flow rises with the fill (deeper bed, steeper surface): bisection to round-off
+    double lo = 0, hi = pi;
+    for (int it = 0; it < 200 && hi - lo > 1e-15; ++it)
+    {
+        const double mid = 0.5*(lo + hi);
+        (profileFlow(k, dz, mid, nextDepth) < flow ? lo : hi) = mid;
+    }
+    return k.bulkDensity*dz*bedArea(k.drumDiameter, 0.5*(lo + hi));
+}
+
+
+double saemanKilnFlow(const SaemanKiln& k, double dz, double kilnMass, double nextDepth)
+{
+    if (!(kilnMass > 0)) return 0;
+    const double beta = fillAngle(k.drumDiameter, kilnMass/(k.bulkDensity*dz));
+    return std::max(profileFlow(k, dz, std::min(beta, pi), nextDepth), 0.0);
+}
+
 } // namespace drum

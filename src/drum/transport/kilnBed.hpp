@@ -21,6 +21,9 @@ struct SaemanKiln
     double bulkDensity = 0;     //!< rho_b, kg/m3
     double drumSlope = 0;       //!< alpha, rad (towards the discharge)
     double bedSlope = 0;        //!< gamma, rad: the bed surface's own axial fall (0: level bed)
+    //- gamma from the bed depths instead: (h_i - h_{i+1})/dz with the next slice's
+    //  bed (none past the discharge end, which holds no dam); bedSlope is then unused
+    bool slopeFromProfile = false;
     double repose = 0;          //!< phi, rad (kinetic angle of repose)
 };
 
@@ -42,6 +45,19 @@ double saemanKilnMass(const SaemanKiln& k, double sliceLength, double flow);
 //- Kilning flow of a slice of length dz holding kilnMass in its bed (Eq 22);
 //  beyond half fill the half-full bed's flow
 double saemanKilnFlow(const SaemanKiln& k, double sliceLength, double kilnMass);
+
+//- Depth of a bed of fill angle beta at the drum's lowest line, D/2 (1 - cos(beta/2))
+double bedDepth(double drumDiameter, double fillAngle);
+
+//- With slopeFromProfile: the kiln mass of a slice of length dz carrying
+//  `flow` when the next slice's bed is nextDepth deep (gamma = (h - h_next)/dz;
+//  Eq 22 with that gamma is monotone in the fill); InputError when even a
+//  half-full bed cannot carry it
+double saemanKilnMass(const SaemanKiln& k, double sliceLength, double flow, double nextDepth);
+
+//- With slopeFromProfile: Eq 22 for the slice's bed and the next slice's depth
+//  (0 when the bed would run backwards)
+double saemanKilnFlow(const SaemanKiln& k, double sliceLength, double kilnMass, double nextDepth);
 
 } // namespace drum
 

@@ -51,13 +51,14 @@ bad 's/integrator: exact/integrator: rk4/' "rtd.integrator.*allowed"
 bad 's/backFraction: .*/backFraction: 0.95/' "C_F + C_B"
 # the kilning bed from the rolling-bed equation (Sherritt 1991 Eq 22): no kiln time
 mkdir -p "$work/saeman"
-sed 's/^  kilnTime: .*/  kilnTime: saeman/' "$work/drumDict" > "$work/saeman/drumDict"
+sed 's/^  kilnTime: .*/  kilnTime: saeman\n  kilnBedSlope_deg: profile/' "$work/drumDict" > "$work/saeman/drumDict"
 "$solver" -case "$work/saeman" > "$work/saeman/log" 2>&1 || { cat "$work/saeman/log"; fail "kilnTime saeman did not run"; }
 grep -q "rolling-bed equation" "$work/saeman/log" || fail "saeman kilning not reported"
 awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i }
     NR==2 { t = $(c["kiln_time_s"]); m = $(c["kiln_mass_kg"]); if (!(t > 0 && t < 1e4 && m > 0)) { print t, m; exit 1 } }' \
     "$work/saeman/results/summary.csv" || fail "saeman: no implied kiln time"
 bad 's/^  kilnTime: .*/  kilnTime: saemann/' "model.kilnTime.*or saeman"
+bad 's/^  kilnTime: .*/  kilnTime: saeman\n  kilnBedSlope_deg: profiled/' "model.kilnBedSlope_deg.*or profile"
 bad 's/^  kilnTime: .*/  kilnTime: 9.28\n  kilnBedSlope_deg: 1/' "model.kilnBedSlope_deg': not used without model.kilnTime saeman"
 bad 's/^  kilnTime: .*/  kilnTime: saeman/; s/^rtd:/estimation: {parameters: [backFraction]}\nrtd:/' "not with model.kilnTime saeman"
 # entries the chosen model or partition does not use are refused, not ignored

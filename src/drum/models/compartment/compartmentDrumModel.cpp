@@ -63,7 +63,27 @@ CompartmentSettings readSettings(const DrumCase& c)
         // the kilning bed from physics: no kiln time to give or fit
         s.saemanKiln = true;
         s.lee.kilnTime = std::numeric_limits<double>::infinity();
-        s.kilnBedSlopeDeg = r.number(mo, "model", "kilnBedSlope_deg", -10, 10, 0.0);
+        const YAML::Node g = mo["kilnBedSlope_deg"];
+        if (g && g.IsScalar() && g.Scalar() == "profile")
+        {
+            s.kilnBedSlopeFromProfile = true;
+        }
+        else
+        {
+            if (g)
+            {
+                try
+                {
+                    yamlNumber(g, "model.kilnBedSlope_deg", file);
+                }
+                catch (const InputError&)
+                {
+                    throw InputError(fileLine(file, g), "model.kilnBedSlope_deg", "'" + (g.IsScalar() ? g.Scalar()
+                        : std::string("?")) + "': a slope in deg, range [-10, 10], or profile (from the bed depths)");
+                }
+            }
+            s.kilnBedSlopeDeg = r.number(mo, "model", "kilnBedSlope_deg", -10, 10, 0.0);
+        }
     }
     else
     {
@@ -237,6 +257,7 @@ void CompartmentDrumModel::runWith
             k.bulkDensity = dryer.bulkDensity;
             k.drumSlope = c_.drum.slopeDeg*deg;
             k.bedSlope = s_.kilnBedSlopeDeg*deg;
+            k.slopeFromProfile = s_.kilnBedSlopeFromProfile;
             k.repose = data[i].phiDeg*deg;
             slices[i].saemanKiln = k;
             slices[i].length = c_.drum.length/s_.slices;

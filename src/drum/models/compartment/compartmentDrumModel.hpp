@@ -31,6 +31,7 @@ struct CompartmentSettings
     //  (Sherritt 1991 Eq 22) instead of one t_kiln; kilnBedSlope_deg its gamma
     bool saemanKiln = false;
     double kilnBedSlopeDeg = 0;
+    bool kilnBedSlopeFromProfile = false;   //!< kilnBedSlope_deg profile: gamma from the bed depths
     StagnantExchange stagnant{0.0, 600.0};          //!< stagnantRatio, exchangeTime
     DenseDispersionEntry dispersion;
     std::string dispersionBed = "kiln";             //!< kiln | passive

@@ -52,6 +52,20 @@ CompartmentNetwork::CompartmentNetwork
 }
 
 
+namespace
+{
+
+// Depth of a slice's rolling bed (0 without one), for the next slice upstream's bed slope
+double kilnBedDepth(const CompartmentSlice& s, double kilnMass)
+{
+    if (!s.saemanKiln || !(kilnMass > 0)) return 0;
+    const double D = s.saemanKiln->drumDiameter;
+    return bedDepth(D, fillAngle(D, kilnMass/(s.saemanKiln->bulkDensity*s.length)));
+}
+
+} // namespace
+
+
 CompartmentSteadyState CompartmentNetwork::steadyState() const
 {
     const int n = nSlices();
@@ -67,6 +81,7 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
 
     const bool kilns = std::isfinite(kilnTime_);
     double backFromNext = 0;    // F_b of A_{i+1}, which lands in P_i
+    double nextDepth = 0;       // bed depth of slice i+1 (none past the discharge end)
     for (int i = n - 1; i >= 0; --i)
     {
         const CompartmentSlice& s = slices_[i];
@@ -81,7 +96,9 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
         }
         else if (s.saemanKiln)
         {
-            mp = s.designLoad + saemanKilnMass(*s.saemanKiln, s.length, target - linearMax);
+            mp = s.designLoad + (s.saemanKiln->slopeFromProfile
+                ? saemanKilnMass(*s.saemanKiln, s.length, target - linearMax, nextDepth)
+                : saemanKilnMass(*s.saemanKiln, s.length, target - linearMax));
         }
         else if (kilns)
         {
@@ -106,6 +123,7 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
         st.backFlow(i) = s.backFraction*release;
         st.returnFlow(i) = (1.0 - s.forwardFraction - s.backFraction)*release;
         backFromNext = st.backFlow(i);
+        nextDepth = kilnBedDepth(s, st.kilnMass(i));
     }
     return st;
 }
@@ -127,8 +145,18 @@ Eigen::VectorXd CompartmentNetwork::massRates(const Eigen::VectorXd& m) const
         const double ma = m(activeIndex(i));
         // Passive v4.0: F_a = m_pas/t_pas, F_k_out = m_kiln/t_kiln
         const double fa = std::min(mp, s.designLoad)/s.passiveTime;
-        const double fk = s.saemanKiln ? saemanKilnFlow(*s.saemanKiln, s.length, std::max(mp - s.designLoad, 0.0))
-                        : std::isfinite(kilnTime_) ? std::max(mp - s.designLoad, 0.0)/kilnTime_ : 0.0;
+        const double kilnMass = std::max(mp - s.designLoad, 0.0);
+        double fk = std::isfinite(kilnTime_) ? kilnMass/kilnTime_ : 0.0;
+        if (s.saemanKiln && s.saemanKiln->slopeFromProfile)
+        {
+            const double next = i + 1 < n
+                ? kilnBedDepth(slices_[i + 1], std::max(m(passiveIndex(i + 1)) - slices_[i + 1].designLoad, 0.0)) : 0.0;
+            fk = saemanKilnFlow(*s.saemanKiln, s.length, kilnMass, next);
+        }
+        else if (s.saemanKiln)
+        {
+            fk = saemanKilnFlow(*s.saemanKiln, s.length, kilnMass);
+        }
         // Active v4.0: F_x + F_r + F_b = m/t_act
         const double out = ma/s.activeTime;
         const double fx = s.forwardFraction*out;
