@@ -94,6 +94,37 @@ std::string DictReader::word(const YAML::Node& sec, const std::string& secName, 
 }
 
 
+std::string DictReader::numberOrWord(const YAML::Node& sec, const std::string& secName, const std::string& key,
+                                     double lo, double hi, const std::vector<std::string>& words,
+                                     const std::string& what, double& value, std::optional<double> dflt,
+                                     bool openLo) const
+{
+    const YAML::Node n = sec[key];
+    if (n && n.IsScalar())
+    {
+        for (const auto& w : words)
+        {
+            if (n.Scalar() == w) return w;
+        }
+    }
+    if (n)
+    {
+        const std::string entry = secName + "." + key;
+        try
+        {
+            yamlNumber(n, entry, file_);
+        }
+        catch (const InputError&)
+        {
+            throw InputError(fileLine(file_, n), entry, "'" + (n.IsScalar() ? n.Scalar() : std::string("?"))
+                + "': " + what);
+        }
+    }
+    value = number(sec, secName, key, lo, hi, dflt, openLo);
+    return "";
+}
+
+
 void DictReader::only(const YAML::Node& sec, const std::string& secName, const std::vector<std::string>& keys) const
 {
     if (sec) onlyKeys(sec, secName, keys, file_);

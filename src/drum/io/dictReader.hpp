@@ -35,6 +35,13 @@ public:
     std::string word(const YAML::Node& sec, const std::string& secName, const std::string& key,
                      const std::vector<std::string>& allowed, std::optional<std::string> dflt = {}) const;
 
+    //- A number in [lo, hi] ((lo, hi] with openLo), or one of `words`: returns
+    //  the word given, or "" with `value` set (missing: dflt, else an error).
+    //  Anything else names the entry and `what` (the allowed numbers and words).
+    std::string numberOrWord(const YAML::Node& sec, const std::string& secName, const std::string& key,
+                             double lo, double hi, const std::vector<std::string>& words, const std::string& what,
+                             double& value, std::optional<double> dflt = {}, bool openLo = false) const;
+
     //- Only these keys in the section (a misspelt one names the nearest)
     void only(const YAML::Node& sec, const std::string& secName, const std::vector<std::string>& keys) const;
 

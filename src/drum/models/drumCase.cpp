@@ -276,23 +276,11 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
 DenseDispersionEntry readDenseDispersion(const DictReader& r, const YAML::Node& model)
 {
     DenseDispersionEntry d;
-    if (const YAML::Node dd = model["denseDispersion"])
+    if (model["denseDispersion"])
     {
-        if (!dd.IsScalar())
-        {
-            throw InputError(fileLine(r.file(), dd), "model.denseDispersion",
-                             "none, sherritt2001 or a value in [0, 1] m2/s");
-        }
-        const std::string v = dd.as<std::string>();
-        if (v == "none" || v == "sherritt2001")
-        {
-            d.kind = v;
-        }
-        else
-        {
-            d.kind = "value";
-            d.value = r.number(model, "model", "denseDispersion", 0, 1);
-        }
+        const std::string w = r.numberOrWord(model, "model", "denseDispersion", 0, 1, {"none", "sherritt2001"},
+            "none, sherritt2001 or a value in [0, 1] m2/s", d.value);
+        d.kind = w.empty() ? "value" : w;
     }
     return d;
 }

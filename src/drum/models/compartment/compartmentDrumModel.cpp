@@ -3,7 +3,6 @@
 #include "drum/io/atomicFile.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
-#include "drum/io/yamlInput.hpp"
 #include "drum/numerics/constants.hpp"
 #include "drum/rtd/rtdMoments.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
@@ -58,49 +57,19 @@ CompartmentSettings readSettings(const DrumCase& c)
             r.refuse(mo, "model", k, "by partition flightModel (the flight model gives the forward and back shares)");
         }
     }
-    if (mo["kilnTime"] && mo["kilnTime"].IsScalar() && mo["kilnTime"].Scalar() == "saeman")
+    // kilnTime: Lee's t_kiln, or saeman: the kilning bed from physics (no kiln time to give or fit)
+    s.saemanKiln = r.numberOrWord(mo, "model", "kilnTime", 0, 1e300, {"saeman"},
+        "a time in s, range (0, 1e+300], or saeman (the rolling bed of Sherritt 1991 Eq 22)",
+        s.lee.kilnTime, 9.28, true) == "saeman";
+    if (s.saemanKiln)
     {
-        // the kilning bed from physics: no kiln time to give or fit
-        s.saemanKiln = true;
         s.lee.kilnTime = std::numeric_limits<double>::infinity();
-        const YAML::Node g = mo["kilnBedSlope_deg"];
-        if (g && g.IsScalar() && g.Scalar() == "profile")
-        {
-            s.kilnBedSlopeFromProfile = true;
-        }
-        else
-        {
-            if (g)
-            {
-                try
-                {
-                    yamlNumber(g, "model.kilnBedSlope_deg", file);
-                }
-                catch (const InputError&)
-                {
-                    throw InputError(fileLine(file, g), "model.kilnBedSlope_deg", "'" + (g.IsScalar() ? g.Scalar()
-                        : std::string("?")) + "': a slope in deg, range [-10, 10], or profile (from the bed depths)");
-                }
-            }
-            s.kilnBedSlopeDeg = r.number(mo, "model", "kilnBedSlope_deg", -10, 10, 0.0);
-        }
+        s.kilnBedSlopeFromProfile = r.numberOrWord(mo, "model", "kilnBedSlope_deg", -10, 10, {"profile"},
+            "a slope in deg, range [-10, 10], or profile (from the bed depths)", s.kilnBedSlopeDeg, 0.0) == "profile";
     }
     else
     {
         r.refuse(mo, "model", "kilnBedSlope_deg", "without model.kilnTime saeman");
-        if (const YAML::Node k = mo["kilnTime"])
-        {
-            try
-            {
-                yamlNumber(k, "model.kilnTime", file);
-            }
-            catch (const InputError&)
-            {
-                throw InputError(fileLine(file, k), "model.kilnTime", "'" + (k.IsScalar() ? k.Scalar() : std::string("?"))
-                    + "': a time in s, range (0, 1e+300], or saeman (the rolling bed of Sherritt 1991 Eq 22)");
-            }
-        }
-        s.lee.kilnTime = r.number(mo, "model", "kilnTime", 0, 1e300, 9.28, true);
     }
     s.lee.backFraction = r.number(mo, "model", "backFraction", 0, 1, 0.0);
     s.lee.dragFactor = r.number(mo, "model", "forwardDragFactor", 0, 100, 1.0);
