@@ -207,12 +207,20 @@ int main(int argc, char** argv)
         drum::CsvTable summary({"phi_deg", "tip_radius_m", "psi_ft_deg", "psi_fl_deg",
             "curtain_start_deg", "max_holdup_kg_per_m", "design_flight_holdup_kg_per_m",
             "mean_release_angle_deg", "mean_fall_height_m", "mean_fall_time_s",
-            "design_load_kg", "porter_design_load_kg", "flight_length_m"});
+            "design_load_kg", "porter_design_load_kg", "flight_length_m",
+            "curtain_flow_kg_s", "bed_filled_load_kg", "passive_time_eq34_s",
+            "passive_time_eq421_s", "passive_time_bed_filled_s"});
+        // passive times: Eq 3.4; Eq 4.21's load and the bed-filled load (flights
+        // full from the drum bottom) over the flights' curtain flow (Little's law)
+        const double flow = model.curtainFlow();
+        const double bedFilled = model.bedFilledLoad(0.0);
         summary.addRow({c.phiDeg, flight.tipRadius(), flight.tipOffsetDeg(),
             flight.flightSpacingDeg(), flight.curtainStartDeg(), model.maxHoldup(),
             model.designFlightHoldup(), model.meanReleaseAngleDeg(), model.meanFallHeight(),
             model.meanFallTime(), model.designLoad(), model.porterDesignLoad(),
-            c.settings.flightLength});
+            c.settings.flightLength, flow, bedFilled,
+            (2.0*model.meanReleaseAngleDeg() - 180.0)*drum::deg/model.omega(),
+            model.designLoad()/flow, bedFilled/flow});
 
         drum::Plot pProfile, pSection;
         if (c.plots)

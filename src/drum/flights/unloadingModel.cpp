@@ -188,6 +188,34 @@ double UnloadingModel::porterDesignLoad() const
 }
 
 
+double UnloadingModel::curtainFlow() const
+{
+    return flight_.geometry().nFlights*designFlightHoldup()*settings_.speedRpm/60.0*settings_.flightLength;
+}
+
+
+double UnloadingModel::bedFilledLoad(double pickupDeg) const
+{
+    const double psi5 = flight_.transitionPoints()[4];
+    requireInRange(pickupDeg, -90.0, flight_.curtainStartDeg(), "model.flightPickup_deg");
+    const int nf = flight_.geometry().nFlights;
+    // flights per radian N_F/(2 pi) times the holdup carried from pickup to psi_5
+    return nf/(2.0*pi)*integrate([&](double p) { return holdup(p); }, pickupDeg, psi5)*settings_.flightLength;
+}
+
+
+double UnloadingModel::bedFilledLoad(double bedFromDeg, double bedToDeg) const
+{
+    const double psi5 = flight_.transitionPoints()[4];
+    requireInRange(bedToDeg, -90.0, flight_.curtainStartDeg(), "bed span end (root angle, deg)");
+    requireInRange(bedFromDeg, -90.0, bedToDeg, "bed span start (root angle, deg)");
+    const int nf = flight_.geometry().nFlights;
+    const double pockets = (bedToDeg - bedFromDeg)*deg*maxHoldup();
+    return nf/(2.0*pi)*(pockets + integrate([&](double p) { return holdup(p); }, bedToDeg, psi5))
+         *settings_.flightLength;
+}
+
+
 double UnloadingModel::loadingFactor(double dLoad) const
 {
     requireInRange(dLoad, 0.0, 1e6, "d_load");

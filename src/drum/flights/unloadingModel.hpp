@@ -83,6 +83,24 @@ public:
     //- Dryer design load [kg] over flightLength: Eq 4.21 and Porter's Eq 4.19
     double designLoad() const;
     double porterDesignLoad() const;
+
+    //- Flow the flights release into the curtains [kg/s] over flightLength
+    //  once every flight is full at the tip horizontal: N_F H_0,des n/60
+    //  (each flight empties H_0,des once per revolution)
+    double curtainFlow() const;
+    //- Mass the flights carry [kg] over flightLength in a dryer loaded past
+    //  its design load, where each flight leaves the bed full at the root
+    //  angle pickupDeg and carries H(psi) until it is empty at psi_5
+    //  (phase-averaged: L N_F/(2 pi) int_pickup^psi5 H dpsi). Eq 4.21
+    //  instead mirrors the upper half, as if flights filled only from the
+    //  curtains; both over curtainFlow() give the flights' passive time by
+    //  Little's law (checked against Eq 3.4 in the unit tests)
+    double bedFilledLoad(double pickupDeg) const;
+    //- The same with the bed's span on the rising side: the pockets under the
+    //  bed (root angles bedFromDeg to bedToDeg) are full, H_full (Eq 4.8),
+    //  and a flight leaving the bed at bedToDeg carries H(psi) from there:
+    //  L N_F/(2 pi) [(to - from) H_full + int_to^psi5 H dpsi]
+    double bedFilledLoad(double bedFromDeg, double bedToDeg) const;
     //- Flight loading factor f_load for a dryer loading d_load = M_p/M_p,des
     //  (Eq 4.22 solved for f_load; 1 for d_load >= 1)
     double loadingFactor(double dLoad) const;

@@ -69,3 +69,65 @@ TEST(CompartmentFlightModel, TooManySlicesViolatesNearestNeighbourRule)
     none.drift = nullptr;
     EXPECT_THROW(flightModelSliceData(d, 30, none), InputError);
 }
+
+TEST(CompartmentFlightModel, BedFilledFlightsRideTheirLoadOverTheirFlow)
+{
+    LeeDryer d;
+    d.constantPhiDeg = 40.0;
+    const int n = 10;
+    FlightModelPartition p = partition(1.0);
+    const auto mirror = flightModelSliceData(d, n, p);
+    p.holdup = FlightHoldup::bedFilled;
+    p.pickupDeg = 0.0;
+    const auto filled = flightModelSliceData(d, n, p);
+    FlightGeometry g{2.5, 0.195, 0.183, 90.0, 117.0, 28};
+    UnloadingSettings us;
+    us.bulkDensity = 940;
+    us.speedRpm = 3;
+    us.flightLength = 12.0/n;
+    us.drumSlopeDeg = 2.8;
+    const LeeFlight f(g, 40.0);
+    const UnloadingModel um(f, us);
+    EXPECT_NEAR(filled[0].slice.designLoad, um.bedFilledLoad(0.0), 1e-9*um.bedFilledLoad(0.0));
+    EXPECT_NEAR(filled[0].slice.passiveTime, um.bedFilledLoad(0.0)/um.curtainFlow(), 1e-12);
+    // the release at the design load is the flights' flow in both pictures,
+    // to Eq 3.4's tip-offset difference for Lee's mirrored load
+    EXPECT_NEAR(filled[0].slice.designLoad/filled[0].slice.passiveTime, um.curtainFlow(), 1e-9*um.curtainFlow());
+    EXPECT_NEAR(mirror[0].slice.designLoad/mirror[0].slice.passiveTime/um.curtainFlow(), 1.0, 0.15);
+    // the curtains themselves (C_F, C_B, fall) do not depend on the holdup picture
+    EXPECT_DOUBLE_EQ(filled[0].slice.forwardFraction, mirror[0].slice.forwardFraction);
+    EXPECT_DOUBLE_EQ(filled[0].slice.activeTime, mirror[0].slice.activeTime);
+    // the kilning bed rolls over the full pockets: in the flight-tip circle
+    EXPECT_DOUBLE_EQ(filled[0].kilnBedDiameter, 2.0*f.tipRadius());
+    EXPECT_DOUBLE_EQ(mirror[0].kilnBedDiameter, 5.0);
+}
+
+TEST(CompartmentFlightModel, KilnBedSpanIsTheSegmentAtPhi)
+{
+    LeeDryer d;
+    d.constantPhiDeg = 40.0;
+    FlightModelPartition p = partition(1.0);
+    p.holdup = FlightHoldup::bedFilled;
+    const auto s = flightModelSliceData(d, 4, p);
+    const double dz = 3.0, D = s[0].kilnBedDiameter;
+    // a bed of fill angle 60 deg: area D^2/8 (beta - sin beta)
+    const double beta = M_PI/3;
+    const double mass = 940*dz*D*D/8*(beta - std::sin(beta));
+    const auto spans = kilnBedSpansDeg(d, s, {mass, 0.0, mass, 1e6}, dz);
+    EXPECT_NEAR(spans[0].first, 10.0, 1e-9);
+    EXPECT_NEAR(spans[0].second, 70.0, 1e-9);
+    EXPECT_NEAR(spans[1].first, 40.0, 1e-12);     // no bed: the span closes at phi
+    EXPECT_NEAR(spans[1].second, 40.0, 1e-12);
+    // a bed past the tip horizontal is held there
+    const double psi0 = LeeFlight(FlightGeometry{2.5, 0.195, 0.183, 90.0, 117.0, 28}, 40.0).curtainStartDeg();
+    EXPECT_NEAR(spans[3].second, psi0, 1e-12);
+    EXPECT_LT(spans[3].first, spans[3].second);
+    // the spans feed back: pockets under a 60 deg bed add 60 deg of full flights
+    p.bedSpanDeg = {spans[0], spans[0], spans[0], spans[0]};
+    const auto withBed = flightModelSliceData(d, 4, p);
+    p.bedSpanDeg.clear();
+    p.pickupDeg = 70.0;
+    EXPECT_GT(withBed[0].slice.designLoad, flightModelSliceData(d, 4, p)[0].slice.designLoad);
+    p.bedSpanDeg = {spans[0]};
+    EXPECT_THROW(flightModelSliceData(d, 4, p), InputError);
+}

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 namespace
 {
@@ -181,4 +182,63 @@ TEST(UnloadingModel, RefusesBadSettings)
     s = sugar();
     s.layerBulkDensity = 2000.0;   // denser than the bulk solid
     EXPECT_THROW(drum::UnloadingModel(f, s), drum::InputError);
+}
+
+
+TEST(UnloadingModel, FlightLoadAndCurtainFlowObeyLittlesLaw)
+{
+    // Every flight empties H_0,des into the curtain once per revolution
+    const drum::LeeFlight f(invicta(), 40.0);
+    const drum::UnloadingModel m(f, sugar());
+    const double flow = m.curtainFlow();
+    EXPECT_NEAR(flow, 28*m.designFlightHoldup()*3.0/60.0*12.0, 1e-9*flow);
+    // Flights carrying H(psi) from the tip horizontal psi_0 until empty:
+    // int_psi0^psi5 H dpsi = H_0 (psi_bar - psi_0) by parts (Eq 3.3), so the
+    // load over the flow is the mean ride (psi_bar - psi_0)/omega exactly
+    const double psi0 = f.curtainStartDeg();
+    const double ride = (m.meanReleaseAngleDeg() - psi0)*M_PI/180.0/m.omega();
+    EXPECT_NEAR(m.bedFilledLoad(psi0)/flow, ride, 1e-9*ride);
+    // Eq 4.21 mirrors that upper half into the lower one: twice the load
+    // within the discreteness of its flight sum (28 flights)
+    EXPECT_NEAR(m.designLoad()/(2.0*m.bedFilledLoad(psi0)), 1.0, 0.03);
+    // ... and so its passive time is Eq 3.4's within the tip offset psi_ft:
+    // 2(psi_bar - psi_0) vs 2 psi_bar - 180 deg
+    const double eq34 = (2.0*m.meanReleaseAngleDeg() - 180.0)*M_PI/180.0/m.omega();
+    EXPECT_NEAR(m.designLoad()/flow/eq34, (2.0*(m.meanReleaseAngleDeg() - psi0))
+                                          /(2.0*m.meanReleaseAngleDeg() - 180.0), 0.03);
+    // Lee's Table 7.6 pairs (phi 30: 4 400 kg, t_p 10.685 s; phi 55: 7 495 kg,
+    // 12.816 s; rho_b 940) release under half of what the flights discharge
+    auto s = sugar();
+    s.bulkDensity = 940.0;
+    for (const auto& [phi, load, tp] : {std::tuple{30.0, 4400.0, 10.685}, std::tuple{55.0, 7495.0, 12.816}})
+    {
+        const drum::UnloadingModel lee(drum::LeeFlight(invicta(), phi), s);
+        EXPECT_LT(load/tp, 0.5*lee.curtainFlow()) << "phi " << phi;
+        // while flights leaving the bed full at the drum bottom ride about his time
+        EXPECT_NEAR(lee.bedFilledLoad(0.0)/lee.curtainFlow()/tp, 1.0, 0.25) << "phi " << phi;
+    }
+}
+
+
+TEST(UnloadingModel, BedFilledLoadByHand)
+{
+    const drum::LeeFlight f(invicta(), 40.0);
+    const drum::UnloadingModel m(f, sugar());
+    const double psi1 = f.transitionPoints()[0];
+    const double perRad = 28/(2.0*M_PI)*12.0;
+    // Below psi_1 a flight is full (Eq 4.8), so picking up at 0 or holding
+    // the pockets full from 0 to psi_1 is the same load
+    EXPECT_NEAR(m.bedFilledLoad(0.0, psi1), m.bedFilledLoad(0.0), 1e-9*m.bedFilledLoad(0.0));
+    // Pockets under the bed add H_full per radian of bed
+    const double a = 20.0, b = 70.0;
+    EXPECT_NEAR(m.bedFilledLoad(a, b) - m.bedFilledLoad(b),
+                perRad*(b - a)*M_PI/180.0*m.maxHoldup(), 1e-9*m.bedFilledLoad(a, b));
+    EXPECT_NEAR(m.bedFilledLoad(b, b), m.bedFilledLoad(b), 1e-12*m.bedFilledLoad(b));
+    // A flight picked up at the bottom carries more than Eq 4.21's mirror
+    // (the lower quadrant's flights are full, not mirrored), close to
+    // Porter's N_F H_0/2 for this flight
+    EXPECT_GT(m.bedFilledLoad(0.0), 1.4*m.designLoad());
+    EXPECT_NEAR(m.bedFilledLoad(0.0)/m.porterDesignLoad(), 1.0, 0.1);
+    EXPECT_THROW(m.bedFilledLoad(f.curtainStartDeg() + 1.0), drum::InputError);
+    EXPECT_THROW(m.bedFilledLoad(50.0, 40.0), drum::InputError);
 }

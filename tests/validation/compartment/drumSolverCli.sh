@@ -19,8 +19,8 @@ awk -F, 'NR==2 { m = $3/60; if (m < 10.29*0.99 || m > 10.29*1.01) { print "mean 
     "$work/results/summary.csv" || fail "mean residence time off Table 7.3"
 [ "$(ls "$work/results" | grep -c '\.tmp')" = 0 ] || fail "temporary files left"
 
-bad() {  # bad <sed expression> <expected text in the error>
-    cp "$work/drumDict" "$work/bad/drumDict"
+bad() {  # bad <sed expression> <expected text in the error> (on $base, default Lee's case)
+    cp "${base:-$work/drumDict}" "$work/bad/drumDict"
     sed -i "$1" "$work/bad/drumDict"
     if "$solver" -case "$work/bad" > "$work/bad/log" 2>&1; then
         fail "accepted: $1"
@@ -38,6 +38,26 @@ sed -e 's/^  partition: leeCorrelations/  partition: flightModel/' -e 's/^  slic
 sed -i 's/^  slices: 20/  slices: 200/' "$work/flightModel/drumDict"
 if "$solver" -case "$work/flightModel" > "$work/flightModel/log" 2>&1; then fail "flightModel accepted 200 slices"; fi
 grep -q "model.slices" "$work/flightModel/log" || fail "nearest-neighbour error does not name model.slices"
+sed -i 's/^  slices: 200/  slices: 20/' "$work/flightModel/drumDict"
+# flights that leave the bed full (flightHoldup bedFilled, pickup from each slice's bed): a fixed point of
+# the flights' load and the bed; more holdup than Lee's mirrored Eq 4.21 load
+mkdir -p "$work/bedFilled"
+sed 's/^  partition: flightModel/&\n  flightHoldup: bedFilled/' "$work/flightModel/drumDict" > "$work/bedFilled/drumDict"
+"$solver" -case "$work/bedFilled" > "$work/bedFilled/log" 2>&1 || { cat "$work/bedFilled/log"; fail "bedFilled case did not run"; }
+grep -q "pockets under each slice's kilning bed full" "$work/bedFilled/log" || fail "bedFilled fixed point not reported"
+paste -d, "$work/flightModel/results/summary.csv" "$work/bedFilled/results/summary.csv" | awk -F, 'NR==1 { n = NF/2 }
+    NR==2 { if (!($(1 + n) > 1.2*$1)) { print $1, $(1 + n); exit 1 } }' || fail "bedFilled holdup not above the Eq 4.21 one"
+awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i }
+    NR > 1 { tp = $(c["passive_time_s"]); if (!(tp > 6 && tp < 15)) { print NR, tp; exit 1 } }' \
+    "$work/bedFilled/results/profile.csv" || fail "bedFilled passive times outside 6-15 s"
+mkdir -p "$work/bad"
+base="$work/bedFilled/drumDict"
+bad 's/^  flightHoldup: bedFilled/  flightHoldup: bedfilled/' "model.flightHoldup.*allowed: eq421, bedFilled"
+bad 's/^  flightHoldup: bedFilled/&\n  flightPickup_deg: bedd/' "model.flightPickup_deg.*or bed"
+bad 's/^  flightHoldup: bedFilled/&\n  flightPickup_deg: 85/' "model.flightPickup_deg.*range"
+bad 's/^  flightHoldup: bedFilled/  flightPickup_deg: 10/' "model.flightPickup_deg': not used without model.flightHoldup bedFilled"
+unset base
+bad 's/^  partition: leeCorrelations/&\n  flightHoldup: bedFilled/' "model.flightHoldup': not used by partition leeCorrelations"
 
 mkdir -p "$work/bad"
 bad 's/feedRate: .*/feedRate: -3/' "material.feedRate.*range"

@@ -34,7 +34,8 @@ CompartmentSettings readSettings(const DrumCase& c)
     const YAML::Node mo = r.section(c.root, "model");
     r.only(mo, "model", {"type", "slices", "partition", "kilnTime", "backFraction", "forwardDragFactor",
                          "designLoadMultiplier", "stagnantRatio", "exchangeTime", "denseDispersion",
-                         "dispersionBed", "subtractNumericalDispersion", "drift", "kilnBedSlope_deg"});
+                         "dispersionBed", "subtractNumericalDispersion", "drift", "kilnBedSlope_deg",
+                         "flightHoldup", "flightPickup_deg"});
     if (!c.flights.twoSection)
     {
         throw InputError(file, "flights.exterior", "model compartment needs the two-section flight entries "
@@ -55,6 +56,31 @@ CompartmentSettings readSettings(const DrumCase& c)
         for (const char* k : {"backFraction", "forwardDragFactor"})
         {
             r.refuse(mo, "model", k, "by partition flightModel (the flight model gives the forward and back shares)");
+        }
+    }
+    if (lee)
+    {
+        for (const char* k : {"flightHoldup", "flightPickup_deg"})
+        {
+            r.refuse(mo, "model", k, "by partition leeCorrelations (its design load is Lee's Eq 4.27)");
+        }
+    }
+    else
+    {
+        // eq421: Lee's mirror rule; bedFilled: flights leave the bed full at flightPickup_deg
+        s.flightHoldup = r.word(mo, "model", "flightHoldup", {"eq421", "bedFilled"}, std::string("eq421"))
+            == "bedFilled" ? FlightHoldup::bedFilled : FlightHoldup::eq421;
+        if (s.flightHoldup == FlightHoldup::bedFilled)
+        {
+            // bed: the pockets under the slice's kilning bed are full (iterated with the bed)
+            s.flightPickupFromBed = !mo["flightPickup_deg"]
+                || r.numberOrWord(mo, "model", "flightPickup_deg", -90, 80, {"bed"},
+                       "a root angle in deg, range [-90, 80], or bed (the span of the slice's kilning bed)",
+                       s.flightPickupDeg) == "bed";
+        }
+        else
+        {
+            r.refuse(mo, "model", "flightPickup_deg", "without model.flightHoldup bedFilled");
         }
     }
     // kilnTime: Lee's t_kiln, or saeman: the kilning bed from physics (no kiln time to give or fit)
@@ -179,6 +205,36 @@ std::unique_ptr<DrumModel> makeCompartmentDrumModel(const DrumCase& c)
 }
 
 
+CompartmentNetwork CompartmentDrumModel::makeNetwork
+(
+    const LeeDryer& dryer,
+    const std::vector<LeeSliceData>& data,
+    const LeeParameters& p
+) const
+{
+    std::vector<CompartmentSlice> slices;
+    for (const auto& s : data) slices.push_back(s.slice);
+    if (s_.saemanKiln)
+    {
+        // each slice's kiln mass rolls as Saeman's bed (Sherritt 1991 Eq 22) at its own phi
+        for (std::size_t i = 0; i < slices.size(); ++i)
+        {
+            SaemanKiln k;
+            k.drumDiameter = data[i].kilnBedDiameter > 0 ? data[i].kilnBedDiameter : c_.drum.diameter;
+            k.speed = c_.drum.speedRpm/60;
+            k.bulkDensity = dryer.bulkDensity;
+            k.drumSlope = c_.drum.slopeDeg*deg;
+            k.bedSlope = s_.kilnBedSlopeDeg*deg;
+            k.slopeFromProfile = s_.kilnBedSlopeFromProfile;
+            k.repose = data[i].phiDeg*deg;
+            slices[i].saemanKiln = k;
+            slices[i].length = c_.drum.length/s_.slices;
+        }
+    }
+    return CompartmentNetwork(std::move(slices), dryer.feedRate, p.kilnTime);
+}
+
+
 void CompartmentDrumModel::runWith
 (
     const LeeDryer& dryer,
@@ -201,39 +257,66 @@ void CompartmentDrumModel::runWith
         fp.fractions = c_.material.fractions;
         fp.particleDensity = c_.material.particleDensity;
         fp.flightAxialLength = c_.flights.axialLength;
+        fp.holdup = s_.flightHoldup;
+        fp.pickupDeg = s_.flightPickupDeg;
         say("slice parameters from Lee's flight model and the " + s_.drift->model + " drift model (V_g "
           + std::to_string(fp.gasVelocity) + " m/s)");
+        if (s_.flightHoldup == FlightHoldup::bedFilled && s_.flightPickupFromBed)
+        {
+            // start from an empty bed: every slice's span is its phi
+            for (int i = 1; i <= s_.slices; ++i)
+            {
+                const double phi = leeSliceReposeDeg(dryer, i, s_.slices);
+                fp.bedSpanDeg.emplace_back(phi, phi);
+            }
+        }
         data = flightModelSliceData(dryer, s_.slices, fp);
         if (const std::string note = fp.drift->summary(); !note.empty())
         {
             say(note);
+        }
+        if (!fp.bedSpanDeg.empty())
+        {
+            // the flights' load depends on the bed, the bed on the load: fixed point
+            say("flights' holdup with the pockets under each slice's kilning bed full (model.flightPickup_deg bed)");
+            for (int it = 0;; ++it)
+            {
+                const CompartmentSteadyState st = makeNetwork(dryer, data, p).steadyState();
+                const auto spans = kilnBedSpansDeg(dryer, data,
+                    std::vector<double>(st.kilnMass.data(), st.kilnMass.data() + st.kilnMass.size()),
+                    c_.drum.length/s_.slices);
+                double change = 0;
+                for (int i = 0; i < s_.slices; ++i)
+                {
+                    change = std::max({change, std::abs(spans[i].first - fp.bedSpanDeg[i].first),
+                                       std::abs(spans[i].second - fp.bedSpanDeg[i].second)});
+                }
+                fp.bedSpanDeg = spans;
+                data = flightModelSliceData(dryer, s_.slices, fp);
+                if (change < 1e-9) break;
+                if (it == 200)
+                {
+                    throw InputError(c_.path.string(), "model.flightPickup_deg",
+                        "the flights' load and the kilning bed did not settle in 200 passes (last change "
+                      + std::to_string(change) + " deg); give a pickup angle instead of bed");
+                }
+            }
+            const auto& a = fp.bedSpanDeg.front();
+            const auto& b = fp.bedSpanDeg.back();
+            say("kilning bed from root angle " + std::to_string(a.first) + "-" + std::to_string(a.second)
+              + " deg (feed end) to " + std::to_string(b.first) + "-" + std::to_string(b.second)
+              + " deg (discharge end)");
         }
     }
     else
     {
         data = leeSliceData(dryer, s_.slices, p);
     }
-    std::vector<CompartmentSlice> slices;
-    for (const auto& s : data) slices.push_back(s.slice);
     if (s_.saemanKiln)
     {
-        // each slice's kiln mass rolls as Saeman's bed (Sherritt 1991 Eq 22) at its own phi
-        for (std::size_t i = 0; i < slices.size(); ++i)
-        {
-            SaemanKiln k;
-            k.drumDiameter = c_.drum.diameter;
-            k.speed = c_.drum.speedRpm/60;
-            k.bulkDensity = dryer.bulkDensity;
-            k.drumSlope = c_.drum.slopeDeg*deg;
-            k.bedSlope = s_.kilnBedSlopeDeg*deg;
-            k.slopeFromProfile = s_.kilnBedSlopeFromProfile;
-            k.repose = data[i].phiDeg*deg;
-            slices[i].saemanKiln = k;
-            slices[i].length = c_.drum.length/s_.slices;
-        }
         say("kilning from the rolling-bed equation (Sherritt 1991 Eq 22), no kiln time");
     }
-    const CompartmentNetwork net(slices, dryer.feedRate, p.kilnTime);
+    const CompartmentNetwork net = makeNetwork(dryer, data, p);
     say("steady state of " + std::to_string(s_.slices) + " slices");
     const CompartmentSteadyState st = net.steadyState();
     // Passive-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51

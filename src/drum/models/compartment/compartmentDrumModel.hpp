@@ -10,6 +10,7 @@
 
 #include "drum/models/drumModel.hpp"
 #include "drum/models/runOutputs.hpp"
+#include "drum/transport/compartment/compartmentFlightModel.hpp"
 #include "drum/transport/compartment/compartmentLeeDryer.hpp"
 #include "drum/transport/compartment/compartmentNetwork.hpp"
 
@@ -37,6 +38,9 @@ struct CompartmentSettings
     std::string dispersionBed = "kiln";             //!< kiln | passive
     bool subtractNumericalDispersion = false;
     std::optional<DriftSettings> drift;             //!< flightModel only
+    FlightHoldup flightHoldup = FlightHoldup::eq421;   //!< flightModel only
+    double flightPickupDeg = 0;                     //!< flightHoldup bedFilled only
+    bool flightPickupFromBed = true;                //!< flightPickup_deg bed (the default)
     // estimation
     std::vector<std::string> estimate;
     int starts = 1;
@@ -54,6 +58,8 @@ public:
     const CompartmentSettings& settings() const { return s_; }
 
 private:
+    CompartmentNetwork makeNetwork(const LeeDryer& dryer, const std::vector<LeeSliceData>& data,
+                                   const LeeParameters& p) const;
     void runWith(const LeeDryer& dryer, const LeeParameters& p, const StagnantExchange& stagnant,
                  const std::optional<MeasuredTracer>& measured, const std::filesystem::path& out) const;
 

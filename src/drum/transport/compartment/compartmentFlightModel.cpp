@@ -3,12 +3,32 @@
 
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/transport/kilnBed.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 namespace drum
 {
+
+namespace
+{
+
+FlightGeometry flightGeometry(const LeeDryer& d)
+{
+    FlightGeometry g;
+    g.drumRadius = d.geometry.drumRadius;
+    g.baseLength = d.geometry.baseLength;
+    g.tipLength = d.geometry.tipLength;
+    g.baseAngleDeg = d.geometry.baseAngleDeg;
+    g.tipAngleDeg = d.geometry.tipAngleDeg;
+    g.nFlights = d.geometry.nFlights;
+    return g;
+}
+
+} // namespace
+
 
 std::vector<LeeSliceData> flightModelSliceData
 (
@@ -25,6 +45,10 @@ std::vector<LeeSliceData> flightModelSliceData
     {
         throw InputError("", "slices", "number of slices must be >= 1");
     }
+    if (!p.bedSpanDeg.empty() && int(p.bedSpanDeg.size()) != n)
+    {
+        throw InputError("", "model.flightPickup_deg", "one bed span per slice needed");
+    }
     if (p.sizes.empty() || p.sizes.size() != p.fractions.size())
     {
         throw InputError("", "material.sizes_um", "one mass fraction per size class needed");
@@ -33,13 +57,7 @@ std::vector<LeeSliceData> flightModelSliceData
     const double theta = d.slopeDeg*deg;
     const double omegaDeg = d.rpm*6.0;      // deg/s
 
-    FlightGeometry g;
-    g.drumRadius = d.geometry.drumRadius;
-    g.baseLength = d.geometry.baseLength;
-    g.tipLength = d.geometry.tipLength;
-    g.baseAngleDeg = d.geometry.baseAngleDeg;
-    g.tipAngleDeg = d.geometry.tipAngleDeg;
-    g.nFlights = d.geometry.nFlights;
+    const FlightGeometry g = flightGeometry(d);
 
     UnloadingSettings us;
     us.bulkDensity = d.bulkDensity;
@@ -53,6 +71,7 @@ std::vector<LeeSliceData> flightModelSliceData
     {
         LeeSliceData s{};
         s.phiDeg = leeSliceReposeDeg(d, i, n);
+        s.kilnBedDiameter = 2.0*d.geometry.drumRadius;
         const LeeFlight flight(g, s.phiDeg);
         const UnloadingModel um(flight, us);
 
@@ -96,7 +115,19 @@ std::vector<LeeSliceData> flightModelSliceData
         {
             throw InputError("", "flights", "the flight releases nothing into the curtain");
         }
-        s.slice.designLoad = d.designLoadMultiplier*um.designLoad();
+        double load = um.designLoad();                                  // Eq 4.21
+        if (p.holdup == FlightHoldup::bedFilled)
+        {
+            // Little's law: the flights' load over the flow they release
+            load = p.bedSpanDeg.empty() ? um.bedFilledLoad(p.pickupDeg)
+                 : um.bedFilledLoad(p.bedSpanDeg.at(i - 1).first, p.bedSpanDeg.at(i - 1).second);
+            s.correlations.passiveTime = load/um.curtainFlow();
+            s.correlations.flightTime = 60.0/d.rpm - s.correlations.passiveTime;
+            s.correlations.designLoadPerLength = load/dL;
+            // the bed rolls over the full pockets, in the flight-tip circle
+            s.kilnBedDiameter = 2.0*flight.tipRadius();
+        }
+        s.slice.designLoad = d.designLoadMultiplier*load;
         s.slice.passiveTime = s.correlations.passiveTime;
         s.slice.activeTime = s.correlations.fallTime;
         s.slice.forwardFraction = cf/wSum/dL;
@@ -112,6 +143,27 @@ std::vector<LeeSliceData> flightModelSliceData
     }
     return out;
 }
+
+std::vector<std::pair<double, double>> kilnBedSpansDeg
+(
+    const LeeDryer& d,
+    const std::vector<LeeSliceData>& slices,
+    const std::vector<double>& kilnMass,
+    const double sliceLength
+)
+{
+    std::vector<std::pair<double, double>> out;
+    for (std::size_t i = 0; i < slices.size(); ++i)
+    {
+        const LeeFlight flight(flightGeometry(d), slices[i].phiDeg);
+        const double D = slices[i].kilnBedDiameter;
+        const double half = 0.5*fillAngle(D, kilnMass.at(i)/(d.bulkDensity*sliceLength))/deg;
+        const double to = std::min(slices[i].phiDeg + half, flight.curtainStartDeg());
+        out.emplace_back(std::min(slices[i].phiDeg - half, to), to);
+    }
+    return out;
+}
+
 
 CompartmentNetwork flightModelNetwork
 (

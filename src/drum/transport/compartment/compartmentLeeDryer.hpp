@@ -46,6 +46,10 @@ struct LeeSliceData
     double phiDeg;
     LeeCorrelationValues correlations;
     CompartmentSlice slice;
+    //- Diameter of the circle the kilning bed rolls in, m: the drum's, or
+    //  the flight-tip circle 2 R_F where the pockets under the bed are
+    //  counted as the flights' (flight model, flightHoldup bedFilled)
+    double kilnBedDiameter = 0;
 };
 
 //- Slice parameters for N slices (Eqs 4.24-4.27 code forms, Eq 3.7-3.8,
