@@ -8,7 +8,10 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <sstream>
 
 
 namespace drum
@@ -132,6 +135,35 @@ DriftSettings readDriftSettings
 }
 
 
+void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
+{
+    // the sweep's gas, as buildDriftTable records it: "gas=air(rho=R,nu=N)"
+    const auto f = table.header().find("fixed");
+    if (f == table.header().end()) return;
+    const std::string& h = f->second;
+    const auto at = h.find("gas=");
+    if (at == std::string::npos) return;
+    const auto value = [&](const std::string& key)
+    {
+        const auto k = h.find(key + "=", at);
+        return k == std::string::npos ? std::numeric_limits<double>::quiet_NaN()
+                                      : std::strtod(h.c_str() + k + key.size() + 1, nullptr);
+    };
+    const double rho = value("rho"), nu = value("nu");
+    const double caseNu = gas.viscosity/gas.density;
+    const double tol = 0.05;
+    if (std::abs(rho/gas.density - 1) > tol || std::abs(nu/caseNu - 1) > tol)
+    {
+        std::ostringstream os;
+        os << "the table was swept in gas of density " << rho << " kg/m3 and kinematic viscosity " << nu
+           << " m2/s; the case's gas is " << gas.density << " kg/m3, " << caseNu
+           << " m2/s (allowed: within 5 % of the table's): sweep a table at the case's gas temperature "
+              "(buildDriftTable entry gasTemperature) or give the case the table's";
+        throw InputError(table.file().string(), "fixed gas", os.str());
+    }
+}
+
+
 std::shared_ptr<const DriftModel> makeDriftModel
 (
     const DriftSettings& s,
@@ -149,6 +181,7 @@ std::shared_ptr<const DriftModel> makeDriftModel
         o.warn = s.warn;
         const auto file = s.table.empty() ? defaultDriftTableFile() : s.table;
         auto table = std::make_shared<const DriftTable>(DriftTable::read(file, o));
+        requireTableGas(*table, gas);
         if (s.model == "table") return std::make_shared<TableDrift>(table);
         return std::make_shared<TableVcDrift>(table, gas, law);
     }
@@ -172,6 +205,7 @@ std::shared_ptr<const DriftModel> makeDriftModel
             o.outside = OutOfRangePolicy::clamp;
             o.warn = s.warn;
             table = std::make_shared<const DriftTable>(DriftTable::read(file, o));
+            requireTableGas(*table, gas);
             if (s.autoInside == "table") inside = std::make_shared<TableDrift>(table);
             else inside = std::make_shared<TableVcDrift>(table, gas, law);
         }

@@ -50,6 +50,10 @@ struct DriftSettings
     AutoDriftOptions autoOptions;
 };
 
+//- InputError naming the table when its sweep gas differs from `gas` by more
+//  than 5 % in density or kinematic viscosity (nothing to check without one)
+void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas);
+
 //- Every drift-model name makeDriftModel knows
 const std::vector<std::string>& driftModelNames();
 
@@ -67,7 +71,9 @@ DriftSettings readDriftSettings
 );
 
 //- Build the named model; InputError naming `entry` and the valid names
-//  for an unknown name, or naming the table/constants file when unreadable
+//  for an unknown name, or naming the table/constants file when unreadable,
+//  or (table, tableVc, auto) when the table's sweep gas (its header's
+//  `fixed: ... gas=air(rho=..,nu=..)`) differs from `gas` by more than 5 %
 std::shared_ptr<const DriftModel> makeDriftModel
 (
     const DriftSettings& settings,

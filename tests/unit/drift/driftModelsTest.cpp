@@ -269,3 +269,38 @@ TEST(PorousSheet, FitUsesTheCurtainSauterDiameterFromTheTableHeader)
     EXPECT_DOUBLE_EQ(model.velocityRatio(fine), model.velocityRatio(coarse));
     EXPECT_GT(model.displacement(fine), model.displacement(coarse));
 }
+
+
+TEST(DriftDictionary, RefusesATableSweptInAnotherGas)
+{
+    const fs::path dir = tmpDir();
+    // the header's fixed line as buildDriftTable writes it, air at 20 degC
+    std::string text = synthetic::table(synthetic::defaultGrid(), [](const synthetic::Point&) -> synthetic::Values
+        { return {0.5, 0.1, 1.0}; });
+    const std::string plain = "# fixed: release_velocity_m_s=0 ";
+    ASSERT_NE(text.find(plain), std::string::npos);
+    text.replace(text.find(plain), plain.size(),
+                 "# fixed: gas=air(rho=1.2086,nu=1.5054e-05) release_velocity_m_s=0 ");
+    synthetic::write(dir/"air20.csv", text);
+    const auto s = readDriftSettings(YAML::Load("model: {drift: table}\ndrift: {table: air20.csv}\n"), "drumDict", dir);
+    EXPECT_NO_THROW(makeDriftModel(s, particleDrag::Gas::air(20)));
+    EXPECT_NO_THROW(makeDriftModel(s, particleDrag::Gas::air(25)));    // rho -1.7 %, nu +3 %: within 5 %
+    try
+    {
+        makeDriftModel(s, particleDrag::Gas::air(80));                 // 17 % lighter
+        ADD_FAILURE() << "a 20 degC table served an 80 degC case";
+    }
+    catch (const InputError& e)
+    {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("air20.csv"), std::string::npos) << m;
+        EXPECT_NE(m.find("fixed gas"), std::string::npos) << m;
+        EXPECT_NE(m.find("within 5 %"), std::string::npos) << m;
+    }
+    const auto vc = readDriftSettings(YAML::Load("model: {drift: tableVc}\ndrift: {table: air20.csv}\n"), "drumDict", dir);
+    EXPECT_THROW(makeDriftModel(vc, particleDrag::Gas::air(80)), InputError);
+    // a table without a recorded gas is not checked
+    loneParticleTable("noGas.csv", [](const synthetic::Point&) { return 0.7; });
+    const auto none = readDriftSettings(YAML::Load("model: {drift: table}\ndrift: {table: noGas.csv}\n"), "drumDict", dir);
+    EXPECT_NO_THROW(makeDriftModel(none, particleDrag::Gas::air(80)));
+}
