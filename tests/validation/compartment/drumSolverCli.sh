@@ -56,7 +56,23 @@ bad 's/^  flightHoldup: bedFilled/  flightHoldup: bedfilled/' "model.flightHoldu
 bad 's/^  flightHoldup: bedFilled/&\n  flightPickup_deg: bedd/' "model.flightPickup_deg.*or bed"
 bad 's/^  flightHoldup: bedFilled/&\n  flightPickup_deg: 85/' "model.flightPickup_deg.*range"
 bad 's/^  flightHoldup: bedFilled/  flightPickup_deg: 10/' "model.flightPickup_deg': not used without model.flightHoldup bedFilled"
+# size classes resolved: each class its own curtains in the shared slices; classes.csv per class,
+# the fine class stays longer than the coarse one
+mkdir -p "$work/classes"
+sed -e 's/sizes_um: \[850\]/sizes_um: [500, 850, 1400]/' -e 's/fractions_pct: \[100\]/fractions_pct: [30, 40, 30]/' \
+    -e 's/^  flightHoldup: bedFilled/&\n  sizeClasses: resolved/' -e 's/^  massRate: 0/  massRate: 20/' \
+    "$work/bedFilled/drumDict" > "$work/classes/drumDict"
+grep -q "^  massRate: 20" "$work/classes/drumDict" || fail "could not set the gas rate"
+"$solver" -case "$work/classes" > "$work/classes/log" 2>&1 || { cat "$work/classes/log"; fail "sizeClasses resolved did not run"; }
+grep -q "3 size classes resolved" "$work/classes/log" || fail "size classes not reported"
+awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i } NR > 1 { t[NR - 1] = $(c["exact_mean_s"]) }
+    END { if (NR != 4 || !(t[1] > t[2] && t[2] > t[3])) { print NR, t[1], t[2], t[3]; exit 1 } }' \
+    "$work/classes/results/classes.csv" || fail "classes.csv: 3 classes, finer ones staying longer"
+base="$work/classes/drumDict"
+bad 's/^  sizeClasses: resolved/  sizeClasses: resolve/' "model.sizeClasses.*allowed: mixed, resolved"
+bad 's/^  sizeClasses: resolved/&\n  denseDispersion: sherritt2001/' "model.denseDispersion.*not with model.sizeClasses resolved"
 unset base
+bad 's/^  partition: leeCorrelations/&\n  sizeClasses: resolved/' "model.sizeClasses': not used by partition leeCorrelations"
 bad 's/^  partition: leeCorrelations/&\n  flightHoldup: bedFilled/' "model.flightHoldup': not used by partition leeCorrelations"
 
 mkdir -p "$work/bad"

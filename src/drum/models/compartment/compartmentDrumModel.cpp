@@ -35,7 +35,7 @@ CompartmentSettings readSettings(const DrumCase& c)
     r.only(mo, "model", {"type", "slices", "partition", "kilnTime", "backFraction", "forwardDragFactor",
                          "designLoadMultiplier", "stagnantRatio", "exchangeTime", "denseDispersion",
                          "dispersionBed", "subtractNumericalDispersion", "drift", "kilnBedSlope_deg",
-                         "flightHoldup", "flightPickup_deg"});
+                         "flightHoldup", "flightPickup_deg", "sizeClasses"});
     if (!c.flights.twoSection)
     {
         throw InputError(file, "flights.exterior", "model compartment needs the two-section flight entries "
@@ -60,7 +60,7 @@ CompartmentSettings readSettings(const DrumCase& c)
     }
     if (lee)
     {
-        for (const char* k : {"flightHoldup", "flightPickup_deg"})
+        for (const char* k : {"flightHoldup", "flightPickup_deg", "sizeClasses"})
         {
             r.refuse(mo, "model", k, "by partition leeCorrelations (its design load is Lee's Eq 4.27)");
         }
@@ -82,6 +82,8 @@ CompartmentSettings readSettings(const DrumCase& c)
         {
             r.refuse(mo, "model", "flightPickup_deg", "without model.flightHoldup bedFilled");
         }
+        s.resolveSizeClasses = r.word(mo, "model", "sizeClasses", {"mixed", "resolved"}, std::string("mixed"))
+            == "resolved";
     }
     // kilnTime: Lee's t_kiln, or saeman: the kilning bed from physics (no kiln time to give or fit)
     s.saemanKiln = r.numberOrWord(mo, "model", "kilnTime", 0, 1e300, {"saeman"},
@@ -117,6 +119,18 @@ CompartmentSettings readSettings(const DrumCase& c)
     if (!lee)
     {
         s.drift = readCaseDriftSettings(c);
+    }
+    if (s.resolveSizeClasses)
+    {
+        if (s.dispersion.kind != "none")
+        {
+            throw InputError(file, "model.denseDispersion", "not with model.sizeClasses resolved (the "
+                "dispersion exchange acts on one network); use mixed or leave it out");
+        }
+        if (s.stagnant.massRatio > 0)
+        {
+            throw InputError(file, "model.stagnantRatio", "not with model.sizeClasses resolved; use mixed");
+        }
     }
 
     if (const YAML::Node e = c.root["estimation"])
@@ -205,6 +219,39 @@ std::unique_ptr<DrumModel> makeCompartmentDrumModel(const DrumCase& c)
 }
 
 
+CompartmentSteadyState CompartmentDrumModel::solve
+(
+    const CompartmentNetwork& net,
+    const std::vector<LeeSliceData>& data,
+    std::vector<CompartmentSteadyState>* classes
+) const
+{
+    if (!s_.resolveSizeClasses)
+    {
+        return net.steadyState();
+    }
+    const SizeClassSteadyState st = sizeClassSteadyState(net, sizeClassSplits(data));
+    if (classes) *classes = st.classes;
+    return st.total;
+}
+
+
+std::vector<SizeClassSplits> CompartmentDrumModel::sizeClassSplits(const std::vector<LeeSliceData>& data) const
+{
+    std::vector<SizeClassSplits> out(c_.material.fractions.size());
+    for (std::size_t k = 0; k < out.size(); ++k)
+    {
+        out[k].feedShare = c_.material.fractions[k];
+        for (const LeeSliceData& s : data)
+        {
+            out[k].forward.push_back(s.classForward.at(k));
+            out[k].back.push_back(s.classBack.at(k));
+        }
+    }
+    return out;
+}
+
+
 CompartmentNetwork CompartmentDrumModel::makeNetwork
 (
     const LeeDryer& dryer,
@@ -281,7 +328,7 @@ void CompartmentDrumModel::runWith
             say("flights' holdup with the pockets under each slice's kilning bed full (model.flightPickup_deg bed)");
             for (int it = 0;; ++it)
             {
-                const CompartmentSteadyState st = makeNetwork(dryer, data, p).steadyState();
+                const CompartmentSteadyState st = solve(makeNetwork(dryer, data, p), data);
                 const auto spans = kilnBedSpansDeg(dryer, data,
                     std::vector<double>(st.kilnMass.data(), st.kilnMass.data() + st.kilnMass.size()),
                     c_.drum.length/s_.slices);
@@ -317,8 +364,10 @@ void CompartmentDrumModel::runWith
         say("kilning from the rolling-bed equation (Sherritt 1991 Eq 22), no kiln time");
     }
     const CompartmentNetwork net = makeNetwork(dryer, data, p);
-    say("steady state of " + std::to_string(s_.slices) + " slices");
-    const CompartmentSteadyState st = net.steadyState();
+    say("steady state of " + std::to_string(s_.slices) + " slices"
+      + (s_.resolveSizeClasses ? ", " + std::to_string(c_.material.sizes.size()) + " size classes resolved" : ""));
+    std::vector<CompartmentSteadyState> classStates;
+    const CompartmentSteadyState st = solve(net, data, &classStates);
     // Passive-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51
     // per slice with X from the slice's bed mass): a symmetric exchange
     // between neighbouring passive cells (compartmentDispersion.hpp)
@@ -352,8 +401,9 @@ void CompartmentDrumModel::runWith
         dispersionFill = sz.fill;
     }
     PassiveDispersionSummary ds;
-    const TracerSystem sys = withPassiveDispersion(net.tracerSystem(st, stagnant), st, disp, &ds,
-        c_.path.string());
+    const TracerSystem sys = s_.resolveSizeClasses
+        ? sizeClassTracerSystem(net, SizeClassSteadyState{st, classStates}, sizeClassSplits(data))
+        : withPassiveDispersion(net.tracerSystem(st, stagnant), st, disp, &ds, c_.path.string());
     if (!disp.coefficient.empty())
     {
         std::ostringstream w;
@@ -415,6 +465,29 @@ void CompartmentDrumModel::runWith
         disp.coefficient.empty() ? 0.0 : ds.meanCoefficient, disp.coefficient.empty() ? nan : ds.meanNumerical,
         disp.coefficient.empty() ? 0.0 : ds.meanAdded};
     const std::optional<RtdMoments> mm = writeSummary(cols, row, measured, out);
+
+    if (s_.resolveSizeClasses)
+    {
+        // each class alone: its holdup, and its tracer's moments (exact, on the class's network)
+        CsvTable cls({"class", "diameter_um", "feed_share", "holdup_kg", "airborne_fraction",
+                      "exact_mean_s", "exact_std_s", "holdup_over_class_feed_s"});
+        const auto splits = sizeClassSplits(data);
+        for (std::size_t k = 0; k < classStates.size(); ++k)
+        {
+            const CompartmentSteadyState& ck = classStates[k];
+            const double hk = ck.totalHoldup();
+            const RtdMoments mk = exactMoments(net.tracerSystem(ck), c_.rtd.pulseDuration);
+            cls.addRow({double(k + 1), c_.material.sizes[k]*1e6, splits[k].feedShare, hk,
+                        hk > 0 ? ck.activeMass.sum()/hk : nan, mk.mean, mk.sd(),
+                        hk/(splits[k].feedShare*c_.material.feedRate)});
+            std::ostringstream os;
+            os << std::setprecision(4) << "size class " << k + 1 << " (" << c_.material.sizes[k]*1e6 << " um, "
+               << 100*splits[k].feedShare << " % of the feed): holdup " << hk << " kg, mean " << mk.mean/60
+               << " min, SD " << mk.sd()/60 << " min";
+            say(os.str());
+        }
+        cls.write(out/"classes.csv");
+    }
 
     CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
         "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",

@@ -13,6 +13,7 @@
 #include "drum/transport/compartment/compartmentFlightModel.hpp"
 #include "drum/transport/compartment/compartmentLeeDryer.hpp"
 #include "drum/transport/compartment/compartmentNetwork.hpp"
+#include "drum/transport/compartment/compartmentSizeClasses.hpp"
 
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ struct CompartmentSettings
     FlightHoldup flightHoldup = FlightHoldup::eq421;   //!< flightModel only
     double flightPickupDeg = 0;                     //!< flightHoldup bedFilled only
     bool flightPickupFromBed = true;                //!< flightPickup_deg bed (the default)
+    //- sizeClasses resolved: each class its own curtains in the shared slices
+    //  (compartmentSizeClasses.hpp); mixed: one feed-weighted C_F, C_B
+    bool resolveSizeClasses = false;
     // estimation
     std::vector<std::string> estimate;
     int starts = 1;
@@ -58,6 +62,10 @@ public:
     const CompartmentSettings& settings() const { return s_; }
 
 private:
+    //- The steady state of `net` (size-resolved when asked; classes filled then)
+    CompartmentSteadyState solve(const CompartmentNetwork& net, const std::vector<LeeSliceData>& data,
+                                 std::vector<CompartmentSteadyState>* classes = nullptr) const;
+    std::vector<SizeClassSplits> sizeClassSplits(const std::vector<LeeSliceData>& data) const;
     CompartmentNetwork makeNetwork(const LeeDryer& dryer, const std::vector<LeeSliceData>& data,
                                    const LeeParameters& p) const;
     void runWith(const LeeDryer& dryer, const LeeParameters& p, const StagnantExchange& stagnant,

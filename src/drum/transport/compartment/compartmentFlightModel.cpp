@@ -85,6 +85,7 @@ std::vector<LeeSliceData> flightModelSliceData
 
         // Axial advance per release angle and size class, solids frame
         double wSum = 0, cf = 0, cb = 0;
+        std::vector<double> cfk(p.sizes.size(), 0.0), cbk(p.sizes.size(), 0.0);
         const double psi0 = flight.curtainStartDeg();
         const double psi5 = flight.transitionPoints()[4];
         for (double a = psi0; a < psi5; a += p.angleStepDeg)
@@ -108,6 +109,8 @@ std::vector<LeeSliceData> flightModelSliceData
                 const double adv = p.counterCurrent ? -dx : dx;      // towards the discharge
                 cf += w*p.fractions[k]*std::max(adv, 0.0);
                 cb += w*p.fractions[k]*std::max(-adv, 0.0);
+                cfk[k] += w*std::max(adv, 0.0);
+                cbk[k] += w*std::max(-adv, 0.0);
             }
             wSum += w;
         }
@@ -132,6 +135,11 @@ std::vector<LeeSliceData> flightModelSliceData
         s.slice.activeTime = s.correlations.fallTime;
         s.slice.forwardFraction = cf/wSum/dL;
         s.slice.backFraction = cb/wSum/dL;
+        for (std::size_t k = 0; k < p.sizes.size(); ++k)
+        {
+            s.classForward.push_back(cfk[k]/wSum/dL);
+            s.classBack.push_back(cbk[k]/wSum/dL);
+        }
         if (s.slice.forwardFraction + s.slice.backFraction > 1.0)
         {
             std::ostringstream os;

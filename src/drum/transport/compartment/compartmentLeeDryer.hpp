@@ -50,6 +50,9 @@ struct LeeSliceData
     //  the flight-tip circle 2 R_F where the pockets under the bed are
     //  counted as the flights' (flight model, flightHoldup bedFilled)
     double kilnBedDiameter = 0;
+    //- Flight model: C_F and C_B of each size class alone (the slice's own
+    //  are their feed-weighted sums)
+    std::vector<double> classForward, classBack;
 };
 
 //- Slice parameters for N slices (Eqs 4.24-4.27 code forms, Eq 3.7-3.8,

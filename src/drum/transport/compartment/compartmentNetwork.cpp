@@ -123,7 +123,7 @@ CompartmentSteadyState CompartmentNetwork::steadyState() const
         st.backFlow(i) = s.backFraction*release;
         st.returnFlow(i) = (1.0 - s.forwardFraction - s.backFraction)*release;
         backFromNext = st.backFlow(i);
-        nextDepth = kilnBedDepth(s, st.kilnMass(i));
+        nextDepth = drum::kilnBedDepth(s, st.kilnMass(i));
     }
     return st;
 }
@@ -146,17 +146,9 @@ Eigen::VectorXd CompartmentNetwork::massRates(const Eigen::VectorXd& m) const
         // Passive v4.0: F_a = m_pas/t_pas, F_k_out = m_kiln/t_kiln
         const double fa = std::min(mp, s.designLoad)/s.passiveTime;
         const double kilnMass = std::max(mp - s.designLoad, 0.0);
-        double fk = std::isfinite(kilnTime_) ? kilnMass/kilnTime_ : 0.0;
-        if (s.saemanKiln && s.saemanKiln->slopeFromProfile)
-        {
-            const double next = i + 1 < n
-                ? kilnBedDepth(slices_[i + 1], std::max(m(passiveIndex(i + 1)) - slices_[i + 1].designLoad, 0.0)) : 0.0;
-            fk = saemanKilnFlow(*s.saemanKiln, s.length, kilnMass, next);
-        }
-        else if (s.saemanKiln)
-        {
-            fk = saemanKilnFlow(*s.saemanKiln, s.length, kilnMass);
-        }
+        const double next = i + 1 < n && s.saemanKiln && s.saemanKiln->slopeFromProfile
+            ? kilnBedDepth(i + 1, std::max(m(passiveIndex(i + 1)) - slices_[i + 1].designLoad, 0.0)) : 0.0;
+        const double fk = kilnFlow(i, kilnMass, next);
         // Active v4.0: F_x + F_r + F_b = m/t_act
         const double out = ma/s.activeTime;
         const double fx = s.forwardFraction*out;
@@ -172,6 +164,27 @@ Eigen::VectorXd CompartmentNetwork::massRates(const Eigen::VectorXd& m) const
         dm(passiveIndex(i > 0 ? i - 1 : 0)) += fb;
     }
     return dm;
+}
+
+
+double CompartmentNetwork::kilnFlow(const int i, const double kilnMass, const double nextDepth) const
+{
+    const CompartmentSlice& s = slices_.at(i);
+    if (s.saemanKiln && s.saemanKiln->slopeFromProfile)
+    {
+        return saemanKilnFlow(*s.saemanKiln, s.length, kilnMass, nextDepth);
+    }
+    if (s.saemanKiln)
+    {
+        return saemanKilnFlow(*s.saemanKiln, s.length, kilnMass);
+    }
+    return std::isfinite(kilnTime_) ? kilnMass/kilnTime_ : 0.0;
+}
+
+
+double CompartmentNetwork::kilnBedDepth(const int i, const double kilnMass) const
+{
+    return drum::kilnBedDepth(slices_.at(i), kilnMass);
 }
 
 

@@ -105,6 +105,13 @@ public:
         const StagnantExchange& stagnant
     ) const;
 
+    //- Kilning flow of slice i (0-based) holding kilnMass above its design
+    //  load, the next slice's bed nextDepth deep (massRates' law: t_kiln, or
+    //  the slice's rolling bed), kg/s
+    double kilnFlow(int i, double kilnMass, double nextDepth) const;
+    //- Depth of slice i's rolling bed holding kilnMass (0 without one), m
+    double kilnBedDepth(int i, double kilnMass) const;
+
     //- Index of the passive / active cell of slice i (0-based) in the state vector
     static int passiveIndex(int i) { return 2*i; }
     static int activeIndex(int i) { return 2*i + 1; }
