@@ -69,7 +69,12 @@ AutoDrift::Choice AutoDrift::choose(const DriftQuery& q, std::string* why, int* 
         {
             lo = 0;     // the table's exact anchor below its smallest height
         }
-        if (!(x[a] >= lo && x[a] <= hi))
+        // the swept range within the table's node tolerance (a query at a node
+        // computed in other units, 582e-6 as 582*1e-6, is on it)
+        const bool in = nodes.size() == 1 ? x[a] >= lo && x[a] <= hi
+                      : a == fallHeightAxis ? x[a] >= 0 && table_->inRange(a, std::max(x[a], nodes.front()))
+                      : table_->inRange(a, x[a]);
+        if (!in)
         {
             if (why)
             {

@@ -254,6 +254,14 @@ DriftTable DriftTable::fromFile(const DriftTableFile& f, const std::filesystem::
 }
 
 
+bool DriftTable::inRange(int a, double x) const
+{
+    const auto& nodes = axes_.at(a);
+    const double tol = nodeTol*std::max({1e-300, std::abs(nodes.front()), std::abs(nodes.back())});
+    return x >= nodes.front() - tol && x <= nodes.back() + tol;
+}
+
+
 void DriftTable::locate(int a, double x, int& i, double& w, bool anchorBelow) const
 {
     const auto& nodes = axes_[a];

@@ -102,6 +102,9 @@ public:
 
     //- Grid nodes of an axis (one node for an axis the sweep held fixed)
     const std::vector<double>& nodes(int axis) const { return axes_[axis]; }
+    //- Whether x lies in [nodes.front(), nodes.back()] of `axis` within the
+    //  table's node tolerance (relative 1e-9: the queries' own rounding)
+    bool inRange(int axis, double x) const;
 
     //- Header entries (key -> text after "key:"), e.g. "generator", "mesh"
     const std::map<std::string, std::string>& header() const { return header_; }

@@ -103,6 +103,11 @@ TEST(AutoDrift, ChoosesTheCheapestAdequateModelAndSaysWhy)
     EXPECT_DOUBLE_EQ(a.displacement(in), m.inside->displacement(in));
     // below the smallest fall height the table's anchor applies: inside
     EXPECT_EQ(a.choose(query(3, 8, 0.3, 1, 2650, 5e-4)), AutoDrift::inside);
+    // the end nodes as other units round them (2000 um as 2000*1e-6 m) are on the
+    // table, as the table itself reads them; a real step past them is not
+    EXPECT_EQ(a.choose(query(3, 8, 4, 1, 2650, 2e-3*(1 + 1e-13)), &why), AutoDrift::inside) << why;
+    EXPECT_EQ(a.choose(query(3, 8, 10*(1 + 1e-13), 1, 2650, 5e-4), &why), AutoDrift::inside) << why;
+    EXPECT_EQ(a.choose(query(3, 8, 4, 1, 2650, 2e-3*(1 + 1e-6))), AutoDrift::outside);
 
     // Outside: spill rate beyond the sweep, or the fixed axis beyond its reach
     const DriftQuery beyond = query(3, 60, 4, 1, 2650, 5e-4);
