@@ -21,6 +21,17 @@ FlightModelPartition partition(double vg)
     p.flightAxialLength = 1.133;
     return p;
 }
+
+//- The Invicta flight's unloading over one of n slices of the 12 m drum (phi 40 deg)
+UnloadingModel invictaSliceUnloading(int n)
+{
+    UnloadingSettings us;
+    us.bulkDensity = 940;
+    us.speedRpm = 3;
+    us.flightLength = 12.0/n;
+    us.drumSlopeDeg = 2.8;
+    return UnloadingModel(LeeFlight(FlightGeometry{2.5, 0.195, 0.183, 90.0, 117.0, 28}, 40.0), us);
+}
 } // namespace
 
 TEST(CompartmentFlightModel, StillGasGivesTheSlopeStepOfEq37)
@@ -30,13 +41,7 @@ TEST(CompartmentFlightModel, StillGasGivesTheSlopeStepOfEq37)
     const int n = 30;
     const auto s = flightModelSliceData(d, n, partition(0.0));
     // Independent: the flight model's own mass-averaged fall height
-    FlightGeometry g{2.5, 0.195, 0.183, 90.0, 117.0, 28};
-    UnloadingSettings us;
-    us.bulkDensity = 940;
-    us.speedRpm = 3;
-    us.flightLength = 12.0/n;
-    us.drumSlopeDeg = 2.8;
-    const UnloadingModel um(LeeFlight(g, 40.0), us);
+    const UnloadingModel um = invictaSliceUnloading(n);
     const double dL = 12.0/n;
     // C_F^0 = h sin(theta)/dL (Eq 3.7), no backmixing without gas
     EXPECT_NEAR(s[0].slice.forwardFraction, um.meanFallHeight()*std::sin(2.8*M_PI/180)/dL, 0.01*s[0].slice.forwardFraction);
@@ -80,14 +85,8 @@ TEST(CompartmentFlightModel, BedFilledFlightsRideTheirLoadOverTheirFlow)
     p.holdup = FlightHoldup::bedFilled;
     p.pickupDeg = 0.0;
     const auto filled = flightModelSliceData(d, n, p);
-    FlightGeometry g{2.5, 0.195, 0.183, 90.0, 117.0, 28};
-    UnloadingSettings us;
-    us.bulkDensity = 940;
-    us.speedRpm = 3;
-    us.flightLength = 12.0/n;
-    us.drumSlopeDeg = 2.8;
-    const LeeFlight f(g, 40.0);
-    const UnloadingModel um(f, us);
+    const UnloadingModel um = invictaSliceUnloading(n);
+    const LeeFlight& f = um.flight();
     EXPECT_NEAR(filled[0].slice.designLoad, um.bedFilledLoad(0.0), 1e-9*um.bedFilledLoad(0.0));
     EXPECT_NEAR(filled[0].slice.passiveTime, um.bedFilledLoad(0.0)/um.curtainFlow(), 1e-12);
     // the release at the design load is the flights' flow in both pictures,
