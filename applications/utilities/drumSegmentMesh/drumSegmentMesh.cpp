@@ -111,18 +111,32 @@ Options parse(int argc, char* argv[])
     return o;
 }
 
-//- A plate of thickness t behind the segment p -> q (on the side of `back`), as an OCC surface;
-//  the root end is pushed `beyond` past p
-int plate(const Vector2d& p, const Vector2d& q, const Vector2d& back, double t, double beyond)
+//- The two-section flight root -> elbow -> tip as one plate of thickness t
+//  behind its leading face (on the side of `back`), the root pushed `beyond`
+//  into the wall; the back face's bend is where the two offset lines meet
+int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip, const Vector2d& back,
+                double t, double beyond)
 {
-    const Vector2d d = (q - p).normalized();
-    Vector2d n(-d.y(), d.x());
-    if (n.dot(back) < 0) n = -n;
-    const Vector2d a = p - beyond*d, b = q, c = q + t*n, e = p - beyond*d + t*n;
+    const auto backNormal = [&](const Vector2d& d)
+    {
+        Vector2d n(-d.y(), d.x());
+        return n.dot(back) < 0 ? Vector2d(-n) : n;
+    };
+    const Vector2d d1 = (elbow - root).normalized(), d2 = (tip - elbow).normalized();
+    const Vector2d n1 = backNormal(d1), n2 = backNormal(d2);
+    // root + t n1 + a d1 = tip + t n2 + b d2
+    Eigen::Matrix2d m;
+    m << d1.x(), -d2.x(), d1.y(), -d2.y();
+    const Vector2d ab = m.colPivHouseholderQr().solve(tip + t*n2 - root - t*n1);
+    const Vector2d bend = root + t*n1 + ab(0)*d1;
+    const Vector2d a = root - beyond*d1;
     std::vector<int> pts;
-    for (const Vector2d& x : {a, b, c, e}) pts.push_back(gmsh::model::occ::addPoint(x.x(), x.y(), 0));
+    for (const Vector2d& x : {a, elbow, tip, Vector2d(tip + t*n2), bend, Vector2d(a + t*n1)})
+    {
+        pts.push_back(gmsh::model::occ::addPoint(x.x(), x.y(), 0));
+    }
     std::vector<int> lines;
-    for (int k = 0; k < 4; ++k) lines.push_back(gmsh::model::occ::addLine(pts[k], pts[(k + 1) % 4]));
+    for (std::size_t k = 0; k < pts.size(); ++k) lines.push_back(gmsh::model::occ::addLine(pts[k], pts[(k + 1) % pts.size()]));
     return gmsh::model::occ::addPlaneSurface({gmsh::model::occ::addCurveLoop(lines)});
 }
 
@@ -186,8 +200,7 @@ int main(int argc, char* argv[])
             // a flight wholly inside the bed leaves nothing to mesh around
             f.visible = !(bed > 0 && std::max(f.tip.y(), f.elbow.y()) < -R + bed);
             flights.push_back(f);
-            tools.push_back({2, plate(f.root, f.elbow, back, t, 2*t)});
-            tools.push_back({2, plate(f.elbow, f.tip, back, t, 0.5*t)});
+            tools.push_back({2, flightPlate(f.root, f.elbow, f.tip, back, t, 2*t)});
         }
         if (bed > 0)
         {
