@@ -1,0 +1,24 @@
+"""dryerGas: the gas of a curtain case, from the project's one air model.
+
+The density and viscosity of dry air come from the C++ side (airProperties,
+particleDrag/gasProperties.hpp), so the curtain tables and the drum model that
+reads them use the same air; this module only asks it.
+"""
+
+import subprocess
+
+
+class GasError(Exception):
+    """airProperties missing or refusing the temperature."""
+
+
+def air_properties(t):
+    """(rho, nu) of dry air at t degC as text (6 digits), from airProperties."""
+    try:
+        r = subprocess.run(["airProperties", "-temperature", "%.12g" % t], capture_output=True, text=True)
+    except OSError as e:
+        raise GasError("airProperties is needed for a gas temperature (build the project: ./Allwmake): %s" % e)
+    if r.returncode != 0:
+        raise GasError("airProperties -temperature %g: %s" % (t, (r.stderr or r.stdout).strip()))
+    v = dict(line.split() for line in r.stdout.splitlines() if line.strip())
+    return v["rho"], v["nu"]
