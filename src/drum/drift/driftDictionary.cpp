@@ -137,17 +137,14 @@ DriftSettings readDriftSettings
 
 void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
 {
-    // the sweep's gas, as buildDriftTable records it: "gas=air(rho=R,nu=N)"
-    const auto f = table.header().find("fixed");
-    if (f == table.header().end()) return;
-    const std::string& h = f->second;
-    const auto at = h.find("gas=");
-    if (at == std::string::npos) return;
+    // the sweep's gas, as buildDriftTable records it: gas=air(rho=R,nu=N[,T=..C])
+    const std::optional<std::string> g = table.fixedSetting("gas");
+    if (!g) return;
     const auto value = [&](const std::string& key)
     {
-        const auto k = h.find(key + "=", at);
+        const auto k = g->find(key + "=");
         return k == std::string::npos ? std::numeric_limits<double>::quiet_NaN()
-                                      : std::strtod(h.c_str() + k + key.size() + 1, nullptr);
+                                      : std::strtod(g->c_str() + k + key.size() + 1, nullptr);
     };
     const double rho = value("rho"), nu = value("nu");
     const double caseNu = gas.viscosity/gas.density;

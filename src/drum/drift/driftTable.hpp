@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -108,6 +109,10 @@ public:
 
     //- Header entries (key -> text after "key:"), e.g. "generator", "mesh"
     const std::map<std::string, std::string>& header() const { return header_; }
+    //- The value of item `key=value` of the header's `fixed:` line (the sweep's
+    //  settings, space-separated), e.g. "gas" -> "air(rho=1.2086,nu=1.5054e-05)";
+    //  empty when the table has no such item
+    std::optional<std::string> fixedSetting(const std::string& key) const;
 
     const std::filesystem::path& file() const { return file_; }
     OutOfRangePolicy policy() const { return options_.outside; }

@@ -30,28 +30,19 @@ struct LnResidual
 //  0 without them
 double tableSauterDiameter(const DriftTable& table)
 {
-    double d32 = 0;
-    if (table.header().count("fixed"))
+    const std::optional<std::string> fractions = table.fixedSetting("class_mass_fractions");
+    if (!fractions) return 0;
+    std::vector<double> w;
+    std::istringstream ws(*fractions);
+    std::string v;
+    while (std::getline(ws, v, ',')) w.push_back(std::stod(v));
+    const auto& d = table.nodes(diameterAxis);
+    if (w.size() != d.size())
     {
-        std::istringstream is(table.header().at("fixed"));
-        std::string item;
-        while (is >> item)
-        {
-            if (item.rfind("class_mass_fractions=", 0) != 0) continue;
-            std::vector<double> w;
-            std::istringstream ws(item.substr(21));
-            std::string v;
-            while (std::getline(ws, v, ',')) w.push_back(std::stod(v));
-            const auto& d = table.nodes(diameterAxis);
-            if (w.size() != d.size())
-            {
-                throw InputError(table.file().string(), "header fixed class_mass_fractions",
-                    "needs one fraction per diameter node (" + std::to_string(d.size()) + ")");
-            }
-            d32 = sauterDiameter(d, w);
-        }
+        throw InputError(table.file().string(), "header fixed class_mass_fractions",
+            "needs one fraction per diameter node (" + std::to_string(d.size()) + ")");
     }
-    return d32;
+    return sauterDiameter(d, w);
 }
 
 } // namespace
