@@ -168,12 +168,7 @@ int main(int argc, char* argv[])
         }
         const double bed = c.settings.bedDepth;
 
-        const fs::path here = fs::current_path();
-        const fs::path whole = fs::weakly_canonical(fs::absolute(o.out));
-        if (std::mismatch(whole.begin(), whole.end(), here.begin(), here.end()).first == whole.end())
-        {
-            throw drum::InputError("", "-out", "'" + o.out.string() + "' is the current folder or holds it");
-        }
+        const fs::path whole = drum::ownOutputFolder(o.out, "-out");
 
         gmsh::initialize();
         gmshUp = true;

@@ -235,15 +235,7 @@ int main(int argc, char** argv)
         }
 
         // a fresh folder that replaces the output folder only when complete
-        const fs::path here = fs::current_path();
-        const fs::path whole = fs::weakly_canonical(fs::absolute(out));
-        if (whole == here || std::mismatch(whole.begin(), whole.end(), here.begin(), here.end()).first
-                                 == whole.end())
-        {
-            throw drum::InputError("", "-out", "'" + out.string() + "' is the current folder or holds it; "
-                                   "give a folder of its own for the results");
-        }
-        drum::ResultsFolder results(whole);
+        drum::ResultsFolder results(drum::ownOutputFolder(out, "-out"));
         const fs::path finalOut = out;
         out = results.path();
         profile.write(out/"unloadingProfile.csv");

@@ -1,6 +1,7 @@
 #include "drum/io/resultsFolder.hpp"
 
 #include "drum/io/atomicFile.hpp"
+#include "drum/io/inputError.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -12,6 +13,18 @@
 
 namespace drum
 {
+
+std::filesystem::path ownOutputFolder(const std::filesystem::path& out, const std::string& option)
+{
+    const std::filesystem::path here = std::filesystem::current_path();
+    const std::filesystem::path whole = std::filesystem::weakly_canonical(std::filesystem::absolute(out));
+    if (whole == here || std::mismatch(whole.begin(), whole.end(), here.begin(), here.end()).first == whole.end())
+    {
+        throw InputError("", option, "'" + out.string() + "' is the current folder or holds it; "
+                         "give a folder of its own for the results");
+    }
+    return whole;
+}
 
 namespace fs = std::filesystem;
 

@@ -14,6 +14,11 @@
 namespace drum
 {
 
+//- The absolute path of a tool's output folder `out` (given by `option`);
+//  InputError when it is the current folder or holds it (replacing it whole
+//  would replace the folder the user stands in)
+std::filesystem::path ownOutputFolder(const std::filesystem::path& out, const std::string& option);
+
 class ResultsFolder
 {
 public:
