@@ -196,11 +196,8 @@ double UnloadingModel::curtainFlow() const
 
 double UnloadingModel::bedFilledLoad(double pickupDeg) const
 {
-    const double psi5 = flight_.transitionPoints()[4];
     requireInRange(pickupDeg, -90.0, flight_.curtainStartDeg(), "model.flightPickup_deg");
-    const int nf = flight_.geometry().nFlights;
-    // flights per radian N_F/(2 pi) times the holdup carried from pickup to psi_5
-    return nf/(2.0*pi)*integrate([&](double p) { return holdup(p); }, pickupDeg, psi5)*settings_.flightLength;
+    return bedFilledLoad(pickupDeg, pickupDeg);     // a bed of no width: H(psi) from the pickup on
 }
 
 
@@ -211,6 +208,7 @@ double UnloadingModel::bedFilledLoad(double bedFromDeg, double bedToDeg) const
     requireInRange(bedFromDeg, -90.0, bedToDeg, "bed span start (root angle, deg)");
     const int nf = flight_.geometry().nFlights;
     const double pockets = (bedToDeg - bedFromDeg)*deg*maxHoldup();
+    // flights per radian N_F/(2 pi) times the pockets' and the carried holdup
     return nf/(2.0*pi)*(pockets + integrate([&](double p) { return holdup(p); }, bedToDeg, psi5))
          *settings_.flightLength;
 }

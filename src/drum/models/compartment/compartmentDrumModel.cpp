@@ -222,7 +222,7 @@ std::unique_ptr<DrumModel> makeCompartmentDrumModel(const DrumCase& c)
 CompartmentSteadyState CompartmentDrumModel::solve
 (
     const CompartmentNetwork& net,
-    const std::vector<LeeSliceData>& data,
+    const std::vector<SizeClassSplits>& splits,
     std::vector<CompartmentSteadyState>* classes
 ) const
 {
@@ -230,7 +230,7 @@ CompartmentSteadyState CompartmentDrumModel::solve
     {
         return net.steadyState();
     }
-    const SizeClassSteadyState st = sizeClassSteadyState(net, sizeClassSplits(data));
+    const SizeClassSteadyState st = sizeClassSteadyState(net, splits);
     if (classes) *classes = st.classes;
     return st.total;
 }
@@ -328,7 +328,8 @@ void CompartmentDrumModel::runWith
             say("flights' holdup with the pockets under each slice's kilning bed full (model.flightPickup_deg bed)");
             for (int it = 0;; ++it)
             {
-                const CompartmentSteadyState st = solve(makeNetwork(dryer, data, p), data);
+                const CompartmentSteadyState st = solve(makeNetwork(dryer, data, p),
+                    s_.resolveSizeClasses ? sizeClassSplits(data) : std::vector<SizeClassSplits>{});
                 const auto spans = kilnBedSpansDeg(dryer, data,
                     std::vector<double>(st.kilnMass.data(), st.kilnMass.data() + st.kilnMass.size()),
                     c_.drum.length/s_.slices);
@@ -366,8 +367,11 @@ void CompartmentDrumModel::runWith
     const CompartmentNetwork net = makeNetwork(dryer, data, p);
     say("steady state of " + std::to_string(s_.slices) + " slices"
       + (s_.resolveSizeClasses ? ", " + std::to_string(c_.material.sizes.size()) + " size classes resolved" : ""));
+    // each size class's curtain shares (resolved classes only: the flight model's)
+    const std::vector<SizeClassSplits> splits =
+        s_.resolveSizeClasses ? sizeClassSplits(data) : std::vector<SizeClassSplits>{};
     std::vector<CompartmentSteadyState> classStates;
-    const CompartmentSteadyState st = solve(net, data, &classStates);
+    const CompartmentSteadyState st = solve(net, splits, &classStates);
     // Passive-phase axial dispersion (none, a value, or Sherritt 2001 Eq 51
     // per slice with X from the slice's bed mass): a symmetric exchange
     // between neighbouring passive cells (compartmentDispersion.hpp)
@@ -402,7 +406,7 @@ void CompartmentDrumModel::runWith
     }
     PassiveDispersionSummary ds;
     const TracerSystem sys = s_.resolveSizeClasses
-        ? sizeClassTracerSystem(net, SizeClassSteadyState{st, classStates}, sizeClassSplits(data))
+        ? sizeClassTracerSystem(net, SizeClassSteadyState{st, classStates}, splits)
         : withPassiveDispersion(net.tracerSystem(st, stagnant), st, disp, &ds, c_.path.string());
     if (!disp.coefficient.empty())
     {
@@ -471,7 +475,6 @@ void CompartmentDrumModel::runWith
         // each class alone: its holdup, and its tracer's moments (exact, on the class's network)
         CsvTable cls({"class", "diameter_um", "feed_share", "holdup_kg", "airborne_fraction",
                       "exact_mean_s", "exact_std_s", "holdup_over_class_feed_s"});
-        const auto splits = sizeClassSplits(data);
         for (std::size_t k = 0; k < classStates.size(); ++k)
         {
             const CompartmentSteadyState& ck = classStates[k];

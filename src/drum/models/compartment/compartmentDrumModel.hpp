@@ -62,8 +62,8 @@ public:
     const CompartmentSettings& settings() const { return s_; }
 
 private:
-    //- The steady state of `net` (size-resolved when asked; classes filled then)
-    CompartmentSteadyState solve(const CompartmentNetwork& net, const std::vector<LeeSliceData>& data,
+    //- The steady state of `net`: size-resolved with `splits` when asked (classes filled then)
+    CompartmentSteadyState solve(const CompartmentNetwork& net, const std::vector<SizeClassSplits>& splits,
                                  std::vector<CompartmentSteadyState>* classes = nullptr) const;
     std::vector<SizeClassSplits> sizeClassSplits(const std::vector<LeeSliceData>& data) const;
     CompartmentNetwork makeNetwork(const LeeDryer& dryer, const std::vector<LeeSliceData>& data,

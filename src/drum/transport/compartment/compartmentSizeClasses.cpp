@@ -118,7 +118,7 @@ SizeClassSteadyState sizeClassSteadyState
         while (shares(hi) > 1 && hi < mMax)
         {
             lo = hi;
-            hi = std::min(mMax, s.designLoad + 2*(hi - s.designLoad) + s.designLoad);
+            hi = std::min(mMax, 2*hi);      // from M_des: doubling
         }
         if (shares(hi) > 1)
         {
