@@ -3,11 +3,11 @@
 // stagger and meshed with gmsh (its C++ API), from the same flight dictionary
 // flightUnloading reads. Writes DIR/drumSegment.msh (MSH 2.2, for
 // gmshToFoam) and DIR/flights.csv (each flight's root angle, tip, the name of
-// its tip patch and, from Lee's unloading model, the spill rate and layer
+// its release patch and, from Lee's unloading model, the spill rate and layer
 // thickness it releases at that angle). See README.md.
 //
 // Usage: drumSegmentMesh -dict FILE -length L [-out DIR] [-level coarse|medium|fine]
-//                        [-plateThickness T]
+//                        [-plateThickness T] [-releaseWidth W]
 #include "drum/flights/flightDictionary.hpp"
 #include "drum/flights/unloadingModel.hpp"
 #include "drum/io/inputError.hpp"
@@ -38,12 +38,14 @@ namespace
 
 const char* const usageText =
     "Usage: drumSegmentMesh -dict FILE -length L [-out DIR] [-level coarse|medium|fine]\n"
-    "                       [-plateThickness T]\n"
+    "                       [-plateThickness T] [-releaseWidth W]\n"
     "  -dict FILE          flight dictionary (YAML, as flightUnloading's)\n"
     "  -length L           axial length of the segment, m, (0, 100]: one flight stagger\n"
     "  -out DIR            output folder (default drumSegment; not the current folder)\n"
     "  -level L            mesh level (default coarse)\n"
-    "  -plateThickness T   thickness of the flight plates, m, [0.002, 0.1] (default 0.02)\n";
+    "  -plateThickness T   thickness of the flight plates, m, [0.002, 0.1] (default 0.02)\n"
+    "  -releaseWidth W     width of each flight's release patch (tipNN) on the back face at the\n"
+    "                      lip, m, [0.005, 0.5] and below half the tip section (default 0.04)\n";
 
 struct Level
 {
@@ -62,6 +64,7 @@ struct Options
     double length = 0;
     Level level = levels[0];
     double plate = 0.02;
+    double release = 0.04;
 };
 
 double number(const std::string& opt, const char* text, double lo, double hi, bool loOpen)
@@ -98,6 +101,7 @@ Options parse(int argc, char* argv[])
         else if (a == "-out") o.out = v;
         else if (a == "-length") { o.length = number(a, v, 0, 100, true); haveLength = true; }
         else if (a == "-plateThickness") o.plate = number(a, v, 0.002, 0.1, false);
+        else if (a == "-releaseWidth") o.release = number(a, v, 0.005, 0.5, false);
         else if (a == "-level")
         {
             const auto l = std::find_if(levels.begin(), levels.end(), [&](const Level& x) { return x.name == v; });
@@ -111,19 +115,24 @@ Options parse(int argc, char* argv[])
     return o;
 }
 
+//- The normal of a flight section's direction d on the side of `back`
+Vector2d backNormal(const Vector2d& d, const Vector2d& back)
+{
+    Vector2d n(-d.y(), d.x());
+    return n.dot(back) < 0 ? Vector2d(-n) : n;
+}
+
 //- The two-section flight root -> elbow -> tip as one plate of thickness t
 //  behind its leading face (on the side of `back`), the root pushed `beyond`
-//  into the wall; the back face's bend is where the two offset lines meet
+//  into the wall; the back face's bend is where the two offset lines meet.
+//  The back face has a point w from the plate's end: the lip segment between
+//  them is where the flight's curtain is released (its normal points away
+//  from the material, down past the lip on the rising side and at the top)
 int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip, const Vector2d& back,
-                double t, double beyond)
+                double t, double beyond, double w)
 {
-    const auto backNormal = [&](const Vector2d& d)
-    {
-        Vector2d n(-d.y(), d.x());
-        return n.dot(back) < 0 ? Vector2d(-n) : n;
-    };
     const Vector2d d1 = (elbow - root).normalized(), d2 = (tip - elbow).normalized();
-    const Vector2d n1 = backNormal(d1), n2 = backNormal(d2);
+    const Vector2d n1 = backNormal(d1, back), n2 = backNormal(d2, back);
     // root + t n1 + a d1 = tip + t n2 + b d2
     Eigen::Matrix2d m;
     m << d1.x(), -d2.x(), d1.y(), -d2.y();
@@ -131,7 +140,7 @@ int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip
     const Vector2d bend = root + t*n1 + ab(0)*d1;
     const Vector2d a = root - beyond*d1;
     std::vector<int> pts;
-    for (const Vector2d& x : {a, elbow, tip, Vector2d(tip + t*n2), bend, Vector2d(a + t*n1)})
+    for (const Vector2d& x : {a, elbow, tip, Vector2d(tip + t*n2), Vector2d(tip + t*n2 - w*d2), bend, Vector2d(a + t*n1)})
     {
         pts.push_back(gmsh::model::occ::addPoint(x.x(), x.y(), 0));
     }
@@ -166,6 +175,14 @@ int main(int argc, char* argv[])
         {
             throw drum::InputError("", "-plateThickness", "thicker than half the shorter flight section");
         }
+        const double w = o.release;
+        if (w > 0.5*c.geometry.tipLength - t)
+        {
+            std::ostringstream os;
+            os << w << " m: wider than half the tip section less the plate thickness ("
+               << 0.5*c.geometry.tipLength - t << " m)";
+            throw drum::InputError("", "-releaseWidth", os.str());
+        }
         const double bed = c.settings.bedDepth;
 
         const fs::path whole = drum::ownOutputFolder(o.out, "-out");
@@ -177,7 +194,7 @@ int main(int argc, char* argv[])
         const int disk = gmsh::model::occ::addDisk(0, 0, 0, R, R);
 
         // the flights at the snapshot: root angles psi_j = snapshot + j 360/N_F
-        struct Flight { double psi; Vector2d root, elbow, tip, tipEnd; bool visible; };
+        struct Flight { double psi; Vector2d root, elbow, tip, lip0, lip1; bool visible; };
         std::vector<Flight> flights;
         gmsh::vectorpair tools;
         for (int j = 0; j < nf; ++j)
@@ -189,13 +206,12 @@ int main(int argc, char* argv[])
             f.tip = flight.tipPosition(f.psi);
             const Vector2d back = -Vector2d(std::cos(f.psi*drum::deg), std::sin(f.psi*drum::deg));
             const Vector2d d = (f.tip - f.elbow).normalized();
-            Vector2d n(-d.y(), d.x());
-            if (n.dot(back) < 0) n = -n;
-            f.tipEnd = f.tip + 0.5*t*n;     // centre of the plate's end face at the tip
+            f.lip0 = f.tip + t*backNormal(d, back);   // the release segment on the back face
+            f.lip1 = f.lip0 - w*d;
             // a flight wholly inside the bed leaves nothing to mesh around
             f.visible = !(bed > 0 && std::max(f.tip.y(), f.elbow.y()) < -R + bed);
             flights.push_back(f);
-            tools.push_back({2, flightPlate(f.root, f.elbow, f.tip, back, t, 2*t)});
+            tools.push_back({2, flightPlate(f.root, f.elbow, f.tip, back, t, 2*t, w)});
         }
         if (bed > 0)
         {
@@ -246,7 +262,7 @@ int main(int argc, char* argv[])
         gmsh::model::occ::extrude(section, 0, 0, o.length, extruded, {o.level.axialLayers}, {}, true);
         gmsh::model::occ::synchronize();
 
-        // patches: inlet (z = 0), outlet (z = L), each flight's tip face, the rest wall
+        // patches: inlet (z = 0), outlet (z = L), each flight's release segment, the rest wall
         const double eps = 1e-6*R;
         const Vector2d lo(-R - 1, -R - 1), hi(R + 1, R + 1);
         std::vector<int> inlet, outlet, walls;
@@ -258,9 +274,11 @@ int main(int argc, char* argv[])
         for (int j = 0; j < nf; ++j)
         {
             if (!flights[j].visible) continue;
-            const Vector2d& e = flights[j].tipEnd;
-            const Vector2d box(0.75*t, 0.75*t);
-            for (const auto& [d, tag] : inBox(2, e - box, e + box, -eps, o.length + eps))
+            // the extruded lip segment is the one surface inside its bounding box
+            const Vector2d& p = flights[j].lip0;
+            const Vector2d& q = flights[j].lip1;
+            const Vector2d tol(1e-3*t, 1e-3*t);
+            for (const auto& [d, tag] : inBox(2, Vector2d(p.cwiseMin(q) - tol), Vector2d(p.cwiseMax(q) + tol), -eps, o.length + eps))
             {
                 tipFaces[j].push_back(tag);
                 used.push_back(tag);
@@ -302,7 +320,7 @@ int main(int argc, char* argv[])
 
         std::ostringstream table;
         table << "flight,root_angle_deg,root_x_m,root_y_m,elbow_x_m,elbow_y_m,tip_x_m,tip_y_m,patch,to_curtain,"
-                 "spill_rate_kg_m_s,layer_thickness_m\n"
+                 "spill_rate_kg_m_s,layer_thickness_m,fall_height_m,release_width_m,release_normal_x,release_normal_y\n"
               << std::setprecision(10);
         int releasing = 0;
         for (int j = 0; j < nf; ++j)
@@ -314,7 +332,8 @@ int main(int argc, char* argv[])
                   << flights[j].elbow.x() << ',' << flights[j].elbow.y() << ','
                   << flights[j].tip.x() << ',' << flights[j].tip.y() << ','
                   << (tipPatch[j].empty() ? std::string("-") : tipPatch[j]) << ',' << int(curtain) << ','
-                  << (curtain ? r.spillRate : 0.0) << ',' << (curtain ? r.layerThickness : 0.0) << '\n';
+                  << (curtain ? r.spillRate : 0.0) << ',' << (curtain ? r.layerThickness : 0.0) << ','
+                  << (curtain ? r.fallHeight : 0.0) << ',' << w << ',' << (flights[j].lip0 - flights[j].tip).x()/t << ',' << (flights[j].lip0 - flights[j].tip).y()/t << '\n';
         }
 
         drum::ResultsFolder results(whole);

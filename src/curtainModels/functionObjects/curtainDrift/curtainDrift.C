@@ -50,8 +50,48 @@ Foam::vector Foam::functionObjects::curtainDrift::up() const
 }
 
 
+Foam::scalar Foam::functionObjects::curtainDrift::landed_(const scalar md) const
+{
+    // on landing patches only what leaves lands (a release patch among them
+    // carries its own class in); through a floor plane the net flux counts
+    return landingPatches_.empty() ? md : max(md, scalar(0));
+}
+
+
 void Foam::functionObjects::curtainDrift::selectFloorFaces()
 {
+    if (!landingPatches_.empty())
+    {
+        // every face of the landing patches; an outward flux lands
+        const labelList ids
+        (
+            mesh_.boundaryMesh().patchSet(landingPatches_, false).sortedToc()
+        );
+        if (ids.empty())
+        {
+            FatalErrorInFunction
+                << type() << ' ' << name() << ": landingPatches "
+                << landingPatches_ << " match no patch of the mesh "
+                << mesh_.boundaryMesh().names() << exit(FatalError);
+        }
+        DynamicList<labelPair> bF;
+        for (const label patchi : ids)
+        {
+            forAll(mesh_.boundaryMesh()[patchi], facei)
+            {
+                bF.append(labelPair(patchi, facei));
+            }
+        }
+        internalFaces_.clear();
+        internalSign_.clear();
+        boundaryFaces_.transfer(bF);
+        boundarySign_ = scalarList(boundaryFaces_.size(), scalar(1));
+        Info<< type() << ' ' << name() << ": "
+            << returnReduce(boundaryFaces_.size(), sumOp<label>())
+            << " landing faces on " << landingPatches_ << endl;
+        return;
+    }
+
     const vector u(up());
     const surfaceVectorField& Sf = mesh_.Sf();
     const surfaceScalarField& magSf = mesh_.magSf();
@@ -128,8 +168,16 @@ void Foam::functionObjects::curtainDrift::selectFloorFaces()
 
 void Foam::functionObjects::curtainDrift::writeFileHeader(Ostream& os)
 {
-    writeHeader(os, "Curtain drift along the gas flow at the floor plane");
-    writeHeaderValue(os, "floorHeight", floorHeight_);
+    if (landingPatches_.empty())
+    {
+        writeHeader(os, "Curtain drift along the gas flow at the floor plane");
+        writeHeaderValue(os, "floorHeight", floorHeight_);
+    }
+    else
+    {
+        writeHeader(os, "Curtain drift along the gas flow where the solids land");
+        writeHeaderValue(os, "landingPatches", landingPatches_);
+    }
     writeHeaderValue(os, "flowDirection", flowDir_);
     writeHeaderValue(os, "releasePatch", releasePatch_);
     writeCommented(os, "Time");
@@ -186,15 +234,58 @@ bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
         drag_.set(i, particleDragModel::New(solids_->drag(i)));
     }
 
-    releasePatch_ = dict.get<word>("releasePatch");
-    if (mesh_.boundaryMesh().findPatchID(releasePatch_) < 0)
+    if (dict.found("releasePatch") == dict.found("releasePatches"))
     {
         FatalIOErrorInFunction(dict)
-            << type() << ' ' << name() << ": releasePatch '" << releasePatch_
-            << "' is not a patch of the mesh " << mesh_.boundaryMesh().names()
-            << exit(FatalIOError);
+            << type() << ' ' << name() << ": give exactly one of "
+            << "'releasePatch' (a patch) or 'releasePatches' (patch names or "
+            << "regular expressions)" << exit(FatalIOError);
     }
-    floorHeight_ = dict.get<scalar>("floorHeight");
+    if (dict.found("releasePatch"))
+    {
+        releasePatch_ = dict.get<word>("releasePatch");
+        const label id = mesh_.boundaryMesh().findPatchID(releasePatch_);
+        if (id < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << type() << ' ' << name() << ": releasePatch '" << releasePatch_
+                << "' is not a patch of the mesh " << mesh_.boundaryMesh().names()
+                << exit(FatalIOError);
+        }
+        releaseIDs_ = labelList(1, id);
+    }
+    else
+    {
+        const wordRes rp(dict.get<wordRes>("releasePatches"));
+        releaseIDs_ = mesh_.boundaryMesh().patchSet(rp, false).sortedToc();
+        if (releaseIDs_.empty())
+        {
+            FatalIOErrorInFunction(dict)
+                << type() << ' ' << name() << ": releasePatches " << rp
+                << " match no patch of the mesh " << mesh_.boundaryMesh().names()
+                << exit(FatalIOError);
+        }
+        OStringStream os;
+        os << rp;
+        releasePatch_ = word::validate(os.str());
+    }
+
+    landingPatches_.clear();
+    if (dict.found("landingPatches"))
+    {
+        if (dict.found("floorHeight"))
+        {
+            FatalIOErrorInFunction(dict)
+                << type() << ' ' << name() << ": give 'floorHeight' (a plane) "
+                << "or 'landingPatches', not both" << exit(FatalIOError);
+        }
+        landingPatches_ = dict.get<wordRes>("landingPatches");
+        floorHeight_ = -GREAT;     // what leaves by lostPatches is all lost
+    }
+    else
+    {
+        floorHeight_ = dict.get<scalar>("floorHeight");
+    }
     flowDir_ = dict.get<vector>("flowDirection");
     if (mag(flowDir_) < SMALL)
     {
@@ -234,6 +325,12 @@ bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
     }
 
     lone_ = dict.isDict("loneParticle");
+    if (lone_ && !landingPatches_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << type() << ' ' << name() << ": loneParticle needs a floorHeight; "
+            << "it is not available with landingPatches" << exit(FatalIOError);
+    }
     if (lone_)
     {
         loneGasVelocity_ = dict.subDict("loneParticle").get<scalar>("gasVelocity");
@@ -261,7 +358,6 @@ bool Foam::functionObjects::curtainDrift::execute()
 void Foam::functionObjects::curtainDrift::writeLanding() const
 {
     const vector u(up());
-    const label slotID = mesh_.boundaryMesh().findPatchID(releasePatch_);
     const surfaceVectorField& Cf = mesh_.Cf();
 
     // the bins span the floor faces' extent along the flow
@@ -285,7 +381,6 @@ void Foam::functionObjects::curtainDrift::writeLanding() const
     const label n = solids_->size();
     List<scalarList> landed(n, scalarList(nBins, Zero)), landedX(n, scalarList(nBins, Zero));
     scalarList lost(n, Zero), inflow(n, Zero), inflowX(n, Zero);
-    const vectorField& slotCf = Cf.boundaryField()[slotID];
     forAll(solids_->names(), i)
     {
         const word& c = solids_->names()[i];
@@ -309,7 +404,7 @@ void Foam::functionObjects::curtainDrift::writeLanding() const
             const label patchi = boundaryFaces_[k].first();
             const label f = boundaryFaces_[k].second();
             const scalar x = Cf.boundaryField()[patchi][f] & flowDir_;
-            const scalar md = rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k];
+            const scalar md = landed_(rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k]);
             landed[i][bin(x)] += md;
             landedX[i][bin(x)] += md*x;
         }
@@ -325,11 +420,18 @@ void Foam::functionObjects::curtainDrift::writeLanding() const
                 }
             }
         }
-        const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
-        forAll(slotPhi, f)
+        for (const label slotID : releaseIDs_)
         {
-            inflow[i] -= rhop*slotPhi[f];
-            inflowX[i] -= rhop*slotPhi[f]*(slotCf[f] & flowDir_);
+            const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
+            const vectorField& slotCf = Cf.boundaryField()[slotID];
+            forAll(slotPhi, f)
+            {
+                // inflow only: a release patch of one class may be where
+                // another lands
+                const scalar phiIn = min(slotPhi[f], scalar(0));
+                inflow[i] -= rhop*phiIn;
+                inflowX[i] -= rhop*phiIn*(slotCf[f] & flowDir_);
+            }
         }
         reduce(landed[i], sumOp<scalarList>());
         reduce(landedX[i], sumOp<scalarList>());
@@ -372,8 +474,6 @@ void Foam::functionObjects::curtainDrift::writeLanding() const
 bool Foam::functionObjects::curtainDrift::write()
 {
     const vector u(up());
-    const label slotID = mesh_.boundaryMesh().findPatchID(releasePatch_);
-    const vectorField& slotCf = mesh_.Cf().boundaryField()[slotID];
     const surfaceVectorField& Cf = mesh_.Cf();
 
     const label n = solids_->size();
@@ -403,22 +503,26 @@ bool Foam::functionObjects::curtainDrift::write()
             const label patchi = boundaryFaces_[k].first();
             const label f = boundaryFaces_[k].second();
             const scalar md =
-                rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k];
+                landed_(rhop*alphaPhi.boundaryField()[patchi][f]*boundarySign_[k]);
             m += md;
             mx += md*(Cf.boundaryField()[patchi][f] & flowDir_);
         }
 
         // Release slot: inflow is a negative flux
-        const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
-        const vectorField& slotU = Up.boundaryField()[slotID];
         scalar mIn = 0, mInX = 0, mInH = 0, mInW = 0;
-        forAll(slotPhi, f)
+        for (const label slotID : releaseIDs_)
         {
-            const scalar md = -rhop*slotPhi[f];
-            mIn += md;
-            mInX += md*(slotCf[f] & flowDir_);
-            mInH += md*(slotCf[f] & u);
-            mInW += md*(-(slotU[f] & u));
+            const scalarField& slotPhi = alphaPhi.boundaryField()[slotID];
+            const vectorField& slotU = Up.boundaryField()[slotID];
+            const vectorField& slotCf = Cf.boundaryField()[slotID];
+            forAll(slotPhi, f)
+            {
+                const scalar md = -rhop*min(slotPhi[f], scalar(0));
+                mIn += md;
+                mInX += md*(slotCf[f] & flowDir_);
+                mInH += md*(slotCf[f] & u);
+                mInW += md*(-(slotU[f] & u));
+            }
         }
 
         reduce(m, sumOp<scalar>());

@@ -36,7 +36,8 @@ Foam::functionObjects::curtainGasVelocity::curtainGasVelocity
     alphaEdge_(curtainSolids::alphaEdgeDefault),
     Vg_(-1),
     hMin_(-GREAT),
-    hMax_(GREAT)
+    hMax_(GREAT),
+    perClass_(false)
 {
     read(dict);
     OFstream& os = file();
@@ -48,6 +49,14 @@ Foam::functionObjects::curtainGasVelocity::curtainGasVelocity
     writeTabbed(os, "Vg");
     writeTabbed(os, "VcByVg");
     writeTabbed(os, "solidsVolume");
+    if (perClass_)
+    {
+        for (const word& c : solids_->names())
+        {
+            writeTabbed(os, "Vc_" + c);
+            writeTabbed(os, "VcByVg_" + c);
+        }
+    }
     os  << endl;
 }
 
@@ -111,6 +120,7 @@ bool Foam::functionObjects::curtainGasVelocity::read(const dictionary& dict)
         hMin_ = min(h.first(), h.second());
         hMax_ = max(h.first(), h.second());
     }
+    perClass_ = dict.getOrDefault<bool>("perClass", false);
     return true;
 }
 
@@ -128,14 +138,23 @@ bool Foam::functionObjects::curtainGasVelocity::write()
         IOobject::groupName("U", solids_->gasName())
     );
 
+    const label n = solids_->size();
+    UPtrList<const volScalarField> alpha(n);
     scalarField alphas(mesh_.nCells(), Zero);
     forAll(solids_->names(), i)
     {
-        alphas += lookupObject<volScalarField>
+        alpha.set
         (
-            IOobject::groupName("alpha", solids_->names()[i])
-        ).primitiveField();
+            i,
+            &lookupObject<volScalarField>
+            (
+                IOobject::groupName("alpha", solids_->names()[i])
+            )
+        );
+        alphas += alpha[i].primitiveField();
     }
+    // per class: the same cells, weighted by the class's own fraction
+    scalarList swi(n, Zero), swui(n, Zero);
 
     const uniformDimensionedVectorField& g = meshObjects::gravity::New(time_);
     const vector up(-g.value()/max(mag(g.value()), VSMALL));
@@ -151,10 +170,21 @@ bool Foam::functionObjects::curtainGasVelocity::write()
             const scalar w = alphas[celli]*V[celli];
             sw += w;
             swu += w*(Ug[celli] & flowDir_);
+            if (perClass_)
+            {
+                forAll(swi, i)
+                {
+                    const scalar wi = alpha[i][celli]*V[celli];
+                    swi[i] += wi;
+                    swui[i] += wi*(Ug[celli] & flowDir_);
+                }
+            }
         }
     }
     reduce(sw, sumOp<scalar>());
     reduce(swu, sumOp<scalar>());
+    reduce(swi, sumOp<scalarList>());
+    reduce(swui, sumOp<scalarList>());
 
     scalar Vg = Vg_;
     if (Vg_ < 0)
@@ -176,12 +206,33 @@ bool Foam::functionObjects::curtainGasVelocity::write()
     setResult("Vg", Vg);
     setResult("VcByVg", ratio);
     setResult("solidsVolume", sw);
+    scalarList Vci(n, Zero);
+    if (perClass_)
+    {
+        forAll(Vci, i)
+        {
+            Vci[i] = swi[i] > 0 ? swui[i]/swi[i] : 0;
+            Info<< "    " << solids_->names()[i] << ": V_c " << Vci[i]
+                << " m/s, V_c/V_g " << (mag(Vg) > VSMALL ? Vci[i]/Vg : 0) << nl;
+            setResult("Vc_" + solids_->names()[i], Vci[i]);
+            setResult("VcByVg_" + solids_->names()[i], mag(Vg) > VSMALL ? Vci[i]/Vg : 0);
+        }
+        Info<< endl;
+    }
 
     if (Pstream::master())
     {
         OFstream& os = file();
         writeCurrentTime(os);
-        os  << tab << Vc << tab << Vg << tab << ratio << tab << sw << endl;
+        os  << tab << Vc << tab << Vg << tab << ratio << tab << sw;
+        if (perClass_)
+        {
+            forAll(Vci, i)
+            {
+                os  << tab << Vci[i] << tab << (mag(Vg) > VSMALL ? Vci[i]/Vg : 0);
+            }
+        }
+        os  << endl;
     }
     return true;
 }
