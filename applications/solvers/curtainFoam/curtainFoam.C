@@ -46,6 +46,7 @@ Description
 #include "EulerDdtScheme.H"
 #include "gaussConvectionScheme.H"
 #include "upwind.H"
+#include "hexMatcher.H"
 #include "particleClass.H"
 #include "turbulentDispersionModel.H"
 
