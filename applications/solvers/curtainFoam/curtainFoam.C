@@ -24,6 +24,11 @@ Description
     upwind, or (MULESCorr in the alpha.* solver dictionary) upwind plus a
     MULES-limited higher-order correction (bounded, conservative).
 
+    Gas sources from constant/fvOptions (OpenFOAM's fvOptions on U.<gas>,
+    e.g. meanVelocityForce driving a periodic segment at its mean axial
+    gas velocity; on k and epsilon the particleTurbulenceInteraction
+    models of libcurtainModels).
+
     Time stepping: transient (Euler ddt, maxCo adjustable step) or, with
     ddtSchemes { default localEuler; }, a pseudo-transient march to the
     steady state with local time steps (PIMPLE maxCo, maxCoParticles).
@@ -38,6 +43,7 @@ Description
 #include "singlePhaseTransportModel.H"
 #include "PhaseIncompressibleTurbulenceModel.H"
 #include "pimpleControl.H"
+#include "fvOptions.H"
 #include "localEulerDdtScheme.H"
 #include "fvcSmooth.H"
 #include "constrainPressure.H"
@@ -80,6 +86,7 @@ int main(int argc, char *argv[])
     #include "createTimeControls.H"
     #include "createRDeltaT.H"
     #include "createFields.H"
+    #include "createFvOptions.H"
 
     turbulence->validate();
 

@@ -320,7 +320,7 @@ int main(int argc, char* argv[])
 
         std::ostringstream table;
         table << "flight,root_angle_deg,root_x_m,root_y_m,elbow_x_m,elbow_y_m,tip_x_m,tip_y_m,patch,to_curtain,"
-                 "spill_rate_kg_m_s,layer_thickness_m,fall_height_m,release_width_m,release_normal_x,release_normal_y\n"
+                 "spill_rate_kg_m_s,layer_thickness_m,fall_height_m,release_width_m,release_normal_x,release_normal_y,repose_angle_deg\n"
               << std::setprecision(10);
         int releasing = 0;
         for (int j = 0; j < nf; ++j)
@@ -333,7 +333,7 @@ int main(int argc, char* argv[])
                   << flights[j].tip.x() << ',' << flights[j].tip.y() << ','
                   << (tipPatch[j].empty() ? std::string("-") : tipPatch[j]) << ',' << int(curtain) << ','
                   << (curtain ? r.spillRate : 0.0) << ',' << (curtain ? r.layerThickness : 0.0) << ','
-                  << (curtain ? r.fallHeight : 0.0) << ',' << w << ',' << (flights[j].lip0 - flights[j].tip).x()/t << ',' << (flights[j].lip0 - flights[j].tip).y()/t << '\n';
+                  << (curtain ? r.fallHeight : 0.0) << ',' << w << ',' << (flights[j].lip0 - flights[j].tip).x()/t << ',' << (flights[j].lip0 - flights[j].tip).y()/t << ',' << c.phiDeg << '\n';
         }
 
         drum::ResultsFolder results(whole);

@@ -304,6 +304,11 @@ int predict(const Args& a)
         for (const auto& n : names) list += n + ", ";
         throw drum::InputError("", "-model", "unknown model '" + model + "': valid names are " + list + "cfd");
     }
+    if (model == "segmentVc")
+    {
+        throw drum::InputError("", "-model", "segmentVc reads a drum segment's curtains by release angle; a "
+                               "wind-tunnel test has one slot and no flights: use table or tableVc");
+    }
     const fs::path matFile = a.get("materials", defaultMaterials().string());
     const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
     const auto tests = drum::readWindTunnelTests(testsFile, materials);

@@ -1,6 +1,7 @@
 #include "drum/drift/driftDictionary.hpp"
 
 #include "drum/drift/porousSheetDrift.hpp"
+#include "drum/drift/segmentDrift.hpp"
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/io/projectPaths.hpp"
@@ -19,7 +20,7 @@ namespace drum
 
 const std::vector<std::string>& driftModelNames()
 {
-    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet", "auto"};
+    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet", "auto", "segmentVc"};
     return names;
 }
 
@@ -69,13 +70,13 @@ DriftSettings readDriftSettings
     }
     const YAML::Node d = root["drift"];
     if (!d) return s;
-    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, outside, constants, auto)");
+    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, segmentTable, outside, constants, auto)");
     for (const auto& kv : d)
     {
         const std::string k = kv.first.as<std::string>();
-        if (k != "table" && k != "outside" && k != "constants" && k != "auto")
+        if (k != "table" && k != "segmentTable" && k != "outside" && k != "constants" && k != "auto")
         {
-            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, outside, constants, auto");
+            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, segmentTable, outside, constants, auto");
         }
     }
     auto path = [&](const char* key)
@@ -89,6 +90,7 @@ DriftSettings readDriftSettings
         return p;
     };
     if (d["table"]) s.table = path("table");
+    if (d["segmentTable"]) s.segmentTable = path("segmentTable");
     if (d["constants"]) s.constants = path("constants");
     if (d["outside"])
     {
@@ -135,10 +137,9 @@ DriftSettings readDriftSettings
 }
 
 
-void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
+void requireSweepGas(const std::optional<std::string>& g, const std::string& file, const particleDrag::Gas& gas)
 {
-    // the sweep's gas, as buildDriftTable records it: gas=air(rho=R,nu=N[,T=..C])
-    const std::optional<std::string> g = table.fixedSetting("gas");
+    // the sweep's gas, as the table writers record it: gas=air(rho=R,nu=N[,T=..C])
     if (!g) return;
     const auto value = [&](const std::string& key)
     {
@@ -156,8 +157,14 @@ void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
            << " m2/s; the case's gas is " << gas.density << " kg/m3, " << caseNu
            << " m2/s (allowed: within 5 % of the table's): sweep a table at the case's gas temperature "
               "(buildDriftTable entry gasTemperature) or give the case the table's";
-        throw InputError(table.file().string(), "fixed gas", os.str());
+        throw InputError(file, "fixed gas", os.str());
     }
+}
+
+
+void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
+{
+    requireSweepGas(table.fixedSetting("gas"), table.file().string(), gas);
 }
 
 
@@ -181,6 +188,20 @@ std::shared_ptr<const DriftModel> makeDriftModel
         requireTableGas(*table, gas);
         if (s.model == "table") return std::make_shared<TableDrift>(table);
         return std::make_shared<TableVcDrift>(table, gas, law);
+    }
+    if (s.model == "segmentVc")
+    {
+        if (s.segmentTable.empty())
+        {
+            throw InputError("", "drift.segmentTable", "the segmentVc drift model needs a drum-segment table "
+                             "(tutorials/curtain/drumSegment Allrun -table writes one)");
+        }
+        SegmentTableOptions o;
+        o.outside = s.outside;
+        o.warn = s.warn;
+        auto table = std::make_shared<const SegmentTable>(SegmentTable::read(s.segmentTable, o));
+        requireSweepGas(table->fixedSetting("gas"), table->file().string(), gas);
+        return std::make_shared<SegmentVcDrift>(table, gas, law);
     }
     if (s.model == "porousSheet")
     {

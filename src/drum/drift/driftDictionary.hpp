@@ -2,11 +2,12 @@
 // that needs more than a name (table path, out-of-range policy, constants):
 //
 //   model:
-//     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet | auto
+//     drift: tableVc       # isolated | sherritt | table | tableVc | porousSheet | auto | segmentVc
 //   drift:                 # optional
 //     table: path          # CFD drift table, relative to the case folder or
 //                          # starting with $DRYER_PROJECT or $DRYER_DATA;
 //                          # default $DRYER_PROJECT/etc/defaults/driftTables/driftTable.csv
+//     segmentTable: path   # drum-segment table (segmentTable.hpp), for segmentVc
 //     outside: refuse      # refuse (default) | clamp, queries outside the table
 //     constants: path      # porousSheet constants; default
 //                          # $DRYER_PROJECT/etc/defaults/driftModels/porousSheet.yaml
@@ -24,6 +25,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +38,7 @@ struct DriftSettings
 {
     std::string model = "sherritt";
     std::filesystem::path table;       //!< empty: defaultDriftTableFile()
+    std::filesystem::path segmentTable; //!< segmentVc's table (required there)
     OutOfRangePolicy outside = OutOfRangePolicy::refuse;
     std::filesystem::path constants;   //!< empty: defaultPorousSheetConstantsFile()
     std::function<void(const std::string&)> warn;  //!< clamp warnings; null: std::cerr
@@ -53,6 +56,8 @@ struct DriftSettings
 //- InputError naming the table when its sweep gas differs from `gas` by more
 //  than 5 % in density or kinematic viscosity (nothing to check without one)
 void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas);
+//- The same check on a `gas=air(rho=..,nu=..)` setting of any table file
+void requireSweepGas(const std::optional<std::string>& gasSetting, const std::string& file, const particleDrag::Gas& gas);
 
 //- Every drift-model name makeDriftModel knows
 const std::vector<std::string>& driftModelNames();

@@ -13,6 +13,7 @@
 #include "particleDrag/gasProperties.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -29,6 +30,12 @@ struct DriftQuery
     double spillRate = 0;        //!< flight discharge rate per metre, kg/(s m) (Eq 40)
     double flightLength = 0;     //!< axial length of the flight, m
     double incline = 0;          //!< drum incline, rad, signed as above
+    //- Where the flight releases (Lee 2008 Ch. 4 angles, deg): its root angle
+    //  from the drum bottom along the rotation, and the dynamic angle of
+    //  repose; NaN when the caller's model has no such angle (only the
+    //  drum-segment table needs them)
+    double releaseAngleDeg = std::numeric_limits<double>::quiet_NaN();
+    double reposeAngleDeg = std::numeric_limits<double>::quiet_NaN();
 };
 
 class DriftModel

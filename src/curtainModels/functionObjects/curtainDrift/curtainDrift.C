@@ -286,6 +286,14 @@ bool Foam::functionObjects::curtainDrift::read(const dictionary& dict)
     {
         floorHeight_ = dict.get<scalar>("floorHeight");
     }
+    periodic_ = dict.getOrDefault<bool>("periodic", false);
+    if (periodic_ && landingPatches_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << type() << ' ' << name() << ": 'periodic yes' measures the "
+            << "drift of curtains landing on walls: it needs 'landingPatches'"
+            << exit(FatalIOError);
+    }
     flowDir_ = dict.get<vector>("flowDirection");
     if (mag(flowDir_) < SMALL)
     {
@@ -478,7 +486,7 @@ bool Foam::functionObjects::curtainDrift::write()
 
     const label n = solids_->size();
     scalarList drift(n, Zero), captured(n, Zero), loneDrift(n, Zero);
-    scalar bulkFloor = 0, bulkFloorX = 0, bulkIn = 0, bulkInX = 0;
+    scalar bulkFloor = 0, bulkFloorX = 0, bulkIn = 0, bulkInX = 0, bulkAxialFlux = 0;
 
     forAll(solids_->names(), i)
     {
@@ -525,6 +533,21 @@ bool Foam::functionObjects::curtainDrift::write()
             }
         }
 
+        // Periodic segment: a landing position does not tell how far a
+        // particle went (it may have crossed the periodic pair), but at a
+        // steady state every particle's axial displacement is the time
+        // integral of its axial velocity, so the class's airborne axial
+        // mass flux integrated over the volume is its inflow times its
+        // mean displacement: drift = sum_cells(rho_p alpha U.e V)/mdot_in
+        scalar axialFlux = 0;
+        if (periodic_)
+        {
+            const volScalarField& alpha =
+                lookupObject<volScalarField>(IOobject::groupName("alpha", c));
+            axialFlux =
+                rhop*gSum(alpha.primitiveField()*(Up.primitiveField() & flowDir_)*mesh_.V());
+        }
+
         reduce(m, sumOp<scalar>());
         reduce(mx, sumOp<scalar>());
         reduce(mIn, sumOp<scalar>());
@@ -552,6 +575,11 @@ bool Foam::functionObjects::curtainDrift::write()
         bulkFloorX += mx;
         bulkIn += mIn;
         bulkInX += mInX;
+        if (periodic_)
+        {
+            drift[i] = axialFlux/mIn;
+            bulkAxialFlux += axialFlux;
+        }
 
         if (lone_)
         {
@@ -588,7 +616,9 @@ bool Foam::functionObjects::curtainDrift::write()
     }
 
     const scalar bulkDrift =
-        (bulkFloor > VSMALL && bulkIn > VSMALL)
+        periodic_
+      ? (bulkIn > VSMALL ? bulkAxialFlux/bulkIn : NaN)
+      : (bulkFloor > VSMALL && bulkIn > VSMALL)
       ? bulkFloorX/bulkFloor - bulkInX/bulkIn
       : NaN;
     const scalar bulkCaptured = bulkIn > VSMALL ? bulkFloor/bulkIn : 0;

@@ -104,6 +104,13 @@ TwoPhaseCase twoPhaseCase(const DrumCase& c, const TwoPhaseSettings& s)
     tc.gas.massRate = c.gas.massRate;
     tc.gas.temperatureC = c.gas.temperatureC;
     tc.gas.direction = c.gas.counterCurrent ? GasFlow::countercurrent : GasFlow::cocurrent;
+    if (s.drift.model == "segmentVc")
+    {
+        // Sherritt's flights are not Lee's: no release angle of the segment's
+        throw InputError(c.path.string(), "model.drift", "segmentVc serves the compartment model's flightModel "
+                         "partition (Lee's flight and release angles); the twoPhase model takes isolated, sherritt, "
+                         "table, tableVc, porousSheet or auto");
+    }
     tc.options.drift = makeDriftModel(s.drift, particleDrag::Gas::air(c.gas.temperatureC), {}, "model.drift");
     tc.options.imposedDenseFlow = s.imposedDenseFlow;
     tc.options.axialSteps = s.axialSteps;

@@ -103,6 +103,8 @@ std::vector<LeeSliceData> flightModelSliceData
                 q.fallHeight = r.fallHeight;
                 q.spillRate = r.spillRate;
                 q.flightLength = p.flightAxialLength;
+                q.releaseAngleDeg = 0.5*(a + b);
+                q.reposeAngleDeg = s.phiDeg;
                 // Drift models work in the gas frame (+x along the gas)
                 q.incline = p.counterCurrent ? -theta : theta;
                 const double dx = p.drift->displacement(q);
