@@ -194,7 +194,7 @@ std::shared_ptr<const DriftModel> makeDriftModel
         if (s.segmentTable.empty())
         {
             throw InputError("", "drift.segmentTable", "the segmentVc drift model needs a drum-segment table "
-                             "(tutorials/curtain/drumSegment Allrun -table writes one)");
+                             "(writeSegmentTable writes one from drum-segment runs)");
         }
         SegmentTableOptions o;
         o.outside = s.outside;
