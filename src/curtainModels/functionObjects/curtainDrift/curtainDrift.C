@@ -534,18 +534,32 @@ bool Foam::functionObjects::curtainDrift::write()
         }
 
         // Periodic segment: a landing position does not tell how far a
-        // particle went (it may have crossed the periodic pair), but at a
-        // steady state every particle's axial displacement is the time
-        // integral of its axial velocity, so the class's airborne axial
-        // mass flux integrated over the volume is its inflow times its
-        // mean displacement: drift = sum_cells(rho_p alpha U.e V)/mdot_in
+        // particle went (it may have crossed the periodic pair). At a steady
+        // state each cell's solids outflow equals its inflow, so the sum
+        // over faces of the flux times the axial step between the cell
+        // centres it joins is the axial moment of what lands less that of
+        // what is released (both at their cells' centres): the class's
+        // inflow times its mean displacement, across the periodic pair too
+        // (the step there is the transformed centre-to-centre vector; the
+        // pair's two sides and the processor sides are each counted half).
         scalar axialFlux = 0;
         if (periodic_)
         {
-            const volScalarField& alpha =
-                lookupObject<volScalarField>(IOobject::groupName("alpha", c));
-            axialFlux =
-                rhop*gSum(alpha.primitiveField()*(Up.primitiveField() & flowDir_)*mesh_.V());
+            const tmp<surfaceVectorField> tdelta(mesh_.delta());
+            const surfaceVectorField& delta = tdelta();
+            axialFlux = rhop*sum(alphaPhi.primitiveField()*(delta.primitiveField() & flowDir_));
+            forAll(mesh_.boundary(), patchi)
+            {
+                if (mesh_.boundary()[patchi].coupled())
+                {
+                    axialFlux += 0.5*rhop*sum
+                    (
+                        alphaPhi.boundaryField()[patchi]
+                       *(delta.boundaryField()[patchi] & flowDir_)
+                    );
+                }
+            }
+            reduce(axialFlux, sumOp<scalar>());
         }
 
         reduce(m, sumOp<scalar>());
