@@ -1,7 +1,7 @@
 // The drum-segment table (file format "dryerSegmentTable 1"): the gas
 // velocity inside each flight's curtain when every flight's curtain falls at
-// once in the drum's own cross-section (tutorials/curtain/drumSegment), per
-// release angle. Its one writer is src/python/segmentTable.py; this is its
+// once in the drum's own cross-section (drumSegmentCase), per
+// release angle. Its one writer is writeSegmentTable; this is its
 // one reader.
 //
 // The format, line by line:
