@@ -80,6 +80,20 @@ double number(const std::string& text, const std::string& file, const std::strin
     throw InputError(file, entry, "'" + text + "' is not a finite number");
 }
 
+std::optional<std::string> fixedSetting(const std::map<std::string, std::string>& header,
+                                        const std::string& key)
+{
+    const auto f = header.find("fixed");
+    if (f == header.end()) return std::nullopt;
+    std::istringstream is(f->second);
+    std::string item;
+    while (is >> item)
+    {
+        if (item.rfind(key + "=", 0) == 0) return item.substr(key.size() + 1);
+    }
+    return std::nullopt;
+}
+
 } // namespace driftTableParse
 
 

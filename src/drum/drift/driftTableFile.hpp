@@ -27,6 +27,8 @@
 
 #include <array>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,6 +43,10 @@ std::vector<std::string> words(const std::string& s);      //!< whitespace-separ
 std::string line(int n);                                    //!< "line n"
 //- A whole finite number; InputError naming file and entry otherwise
 double number(const std::string& text, const std::string& file, const std::string& entry);
+//- The value of `key=value` on a table's '# fixed:' header line (the drift
+//  table's and the segment table's), nullopt without the line or the key
+std::optional<std::string> fixedSetting(const std::map<std::string, std::string>& header,
+                                        const std::string& key);
 }
 
 //- The data columns, in order

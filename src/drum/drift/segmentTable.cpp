@@ -213,15 +213,7 @@ SegmentTable SegmentTable::read(const std::filesystem::path& path, SegmentTableO
 
 std::optional<std::string> SegmentTable::fixedSetting(const std::string& key) const
 {
-    const auto f = header_.find("fixed");
-    if (f == header_.end()) return std::nullopt;
-    std::istringstream is(f->second);
-    std::string item;
-    while (is >> item)
-    {
-        if (item.rfind(key + "=", 0) == 0) return item.substr(key.size() + 1);
-    }
-    return std::nullopt;
+    return driftTableParse::fixedSetting(header_, key);
 }
 
 
