@@ -9,6 +9,7 @@
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "syntheticTable.hpp"
+#include "testTempDir.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -25,9 +26,7 @@ const particleDrag::Gas air = particleDrag::Gas::air(20);
 
 fs::path tmpDir()
 {
-    const fs::path d = fs::temp_directory_path()/("autoDriftTest_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return testTempDir("autoDriftTest");
 }
 
 // Table: V_c/V_g = 0.6 everywhere, drift = lone particle at that V_c; the

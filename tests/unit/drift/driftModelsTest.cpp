@@ -8,6 +8,7 @@
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "syntheticTable.hpp"
+#include "testTempDir.hpp"
 
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
@@ -22,9 +23,7 @@ namespace
 
 fs::path tmpDir()
 {
-    const fs::path d = fs::temp_directory_path()/("driftModelsTest_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return testTempDir("driftModelsTest");
 }
 
 const particleDrag::Gas air = particleDrag::Gas::air(20);

@@ -7,6 +7,7 @@
 #include "drum/io/projectPaths.hpp"
 #include "drum/io/inputError.hpp"
 #include "syntheticTable.hpp"
+#include "testTempDir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,9 +23,7 @@ namespace
 
 fs::path tmpDir()
 {
-    const fs::path d = fs::temp_directory_path()/("driftTableTest_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return testTempDir("driftTableTest");
 }
 
 DriftQuery query(const synthetic::Point& p)

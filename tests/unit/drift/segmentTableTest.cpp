@@ -7,6 +7,7 @@
 #include "drum/drift/segmentTable.hpp"
 #include "drum/io/inputError.hpp"
 #include "drum/transport/compartment/compartmentFlightModel.hpp"
+#include "testTempDir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,9 +25,7 @@ namespace
 
 fs::path tmpDir()
 {
-    const fs::path d = fs::temp_directory_path()/("segmentTableTest_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return testTempDir("segmentTableTest");
 }
 
 const std::string header =

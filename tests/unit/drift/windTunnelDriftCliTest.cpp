@@ -8,6 +8,7 @@
 #include "scoring/windTunnelData.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "syntheticTable.hpp"
+#include "testTempDir.hpp"
 
 #include <gtest/gtest.h>
 
@@ -27,9 +28,7 @@ const fs::path data = drum::dataDir();
 
 fs::path dir()
 {
-    const fs::path d = fs::temp_directory_path()/("windTunnelDriftCli_" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
+    return testTempDir("windTunnelDriftCli");
 }
 
 struct CliRun { int rc; std::string out; };
