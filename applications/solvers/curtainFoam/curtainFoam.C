@@ -12,7 +12,8 @@ Description
     RANS turbulence (any PhaseIncompressible model: kEpsilon, realizableKE,
     kOmegaSST, laminar) and one or more dispersed particle size classes,
     each with its own continuity and momentum, coupled by interphase drag
-    from the particleDragModel family (libcurtainModels). Gravity acts on
+    from the particleDragModel family (libcurtainModels), and optionally
+    with each other by collisions (particleParticleDragModel family). Gravity acts on
     the solids; the gas pressure is p_rgh = p - rho_g g.h.
 
     Physics for dilute curtains (solids fraction mostly below 1e-2; Lee
@@ -55,6 +56,7 @@ Description
 #include "hexMatcher.H"
 #include "particleClass.H"
 #include "turbulentDispersionModel.H"
+#include "particleParticleDragModel.H"
 
 #include <cmath>
 

@@ -229,6 +229,7 @@ std::map<int, double> cfdPredictions
         if (!o.drag.empty()) cmd << " -drag " << o.drag;
         if (!o.particleTurbulence.empty()) cmd << " -particleTurbulence " << o.particleTurbulence;
         if (!o.turbulentDispersion.empty()) cmd << " -turbulentDispersion " << o.turbulentDispersion;
+        if (!o.particleParticleDrag.empty()) cmd << " -particleParticleDrag " << o.particleParticleDrag;
         if (!o.turbulence.empty()) cmd << " -turbulence " << o.turbulence;
         if (!o.wakeShare.empty()) cmd << " -wakeShare " << quote(o.wakeShare);
         if (!o.releaseVelocity.empty()) cmd << " -releaseVelocity " << quote(o.releaseVelocity);

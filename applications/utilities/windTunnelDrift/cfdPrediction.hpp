@@ -26,6 +26,7 @@ struct CfdOptions
     std::string command = "curtainCase";
     std::string particleTurbulence;  //!< curtainCase -particleTurbulence (empty: its default)
     std::string turbulentDispersion; //!< curtainCase -turbulentDispersion (empty: its default)
+    std::string particleParticleDrag; //!< curtainCase -particleParticleDrag (empty: its default)
     std::string turbulence;          //!< curtainCase -turbulence (empty: the template's gas model)
     std::string wakeShare;           //!< curtainCase -wakeShare (empty: its default; checked there)
     std::string releaseVelocity;     //!< curtainCase -releaseVelocity (empty: the template's)

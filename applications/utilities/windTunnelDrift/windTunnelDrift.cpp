@@ -5,7 +5,8 @@
 //                [-level coarse|medium|fine] [-np N] [-drag NAME] [-work DIR] [-keep]
 //                [-turbulence kEpsilon|realizableKE|kOmegaSST]
 //                [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]
-//                [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V]
+//                [-turbulentDispersion none|gradientDiffusion] [-particleParticleDrag none|Syamlal]
+//                [-releaseVelocity V]
 //                                     (cfd: curtainCase's options)
 //                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
 //                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
@@ -57,7 +58,8 @@ const char* usage =
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
     "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
-    "               [-turbulentDispersion none|gradientDiffusion] [-releaseVelocity V] [-sieveBottom UM]\n"
+    "               [-turbulentDispersion none|gradientDiffusion] [-particleParticleDrag none|Syamlal]\n"
+    "               [-releaseVelocity V] [-sieveBottom UM]\n"
     "               [-layerThickness packed|B]\n"
     "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
@@ -127,7 +129,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "collection", "jobs",
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
         "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses"};
     Args a;
     for (int i = 1; i < argc; ++i)
@@ -351,6 +353,7 @@ int predict(const Args& a)
         o.turbulence = named("turbulence", {"kEpsilon", "realizableKE", "kOmegaSST"});
         o.particleTurbulence = named("particleTurbulence", {"none", "Simonin", "SimoninCrowe"});
         o.turbulentDispersion = named("turbulentDispersion", {"none", "gradientDiffusion"});
+        o.particleParticleDrag = named("particleParticleDrag", {"none", "Syamlal"});
         o.wakeShare = a.get("wakeShare");
         o.releaseVelocity = a.get("releaseVelocity");
         o.layerThickness = a.get("layerThickness");

@@ -4,6 +4,8 @@
 
 #include "turbulentDispersionModel.H"
 #include "refuseUnknownEntries.H"
+#include "boundedEntry.H"
+#include "selectModel.H"
 
 namespace Foam
 {
@@ -36,42 +38,12 @@ Foam::scalar Foam::turbulentDispersionModel::coeff
     bool loOpen
 ) const
 {
-    const scalar v = dict_.getOrDefault<scalar>(entry, deflt);
-    if (!((loOpen ? v > lo : v >= lo) && v <= hi))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "Entry '" << entry << "' = " << v << " of turbulentDispersion outside the allowed range "
-            << (loOpen ? "(" : "[") << lo << " " << hi << "]" << exit(FatalIOError);
-    }
-    return v;
+    return boundedEntry(dict_, entry, deflt, lo, hi, loOpen, "turbulentDispersion");
 }
 
 
 Foam::autoPtr<Foam::turbulentDispersionModel>
 Foam::turbulentDispersionModel::New(const dictionary& curtainProperties)
 {
-    dictionary dict;
-    if (curtainProperties.isDict("turbulentDispersion"))
-    {
-        dict = curtainProperties.subDict("turbulentDispersion");
-    }
-    else
-    {
-        dict.name() = curtainProperties.name() + ".turbulentDispersion";
-        dict.add("type", word("none"));
-    }
-    const word modelType(dict.get<word>("type"));
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
-    if (!cstrIter.found())
-    {
-        string valid;
-        for (const word& t : dictionaryConstructorTablePtr_->sortedToc())
-        {
-            valid += (valid.empty() ? "" : ", ") + t;
-        }
-        FatalIOErrorInFunction(dict)
-            << "Entry 'type' = " << modelType << " of turbulentDispersion: valid types are "
-            << valid.c_str() << exit(FatalIOError);
-    }
-    return autoPtr<turbulentDispersionModel>(cstrIter()(dict));
+    return selectModel<turbulentDispersionModel>(curtainProperties, "turbulentDispersion");
 }
