@@ -29,14 +29,8 @@ Foam::particleParticleDragModels::Syamlal::Syamlal(const dictionary& dict)
 
 Foam::tmp<Foam::volScalarField> Foam::particleParticleDragModels::Syamlal::K
 (
-    const volScalarField& alpha1,
-    const dimensionedScalar& rho1,
-    const dimensionedScalar& d1,
-    const volVectorField& U1,
-    const volScalarField& alpha2,
-    const dimensionedScalar& rho2,
-    const dimensionedScalar& d2,
-    const volVectorField& U2,
+    const classState& c1,
+    const classState& c2,
     const volScalarField& alphaGas,
     const volScalarField& alphaByD
 ) const
@@ -46,6 +40,8 @@ Foam::tmp<Foam::volScalarField> Foam::particleParticleDragModels::Syamlal::K
     // The classes are pressureless and capped below packing (alphaMax), so
     // alpha_g stays well above this floor; it only guards round-off
     const volScalarField ag(max(alphaGas, scalar(0.05)));
+    const dimensionedScalar& d1 = c1.d;
+    const dimensionedScalar& d2 = c2.d;
 
     // Lebowitz (1964)
     const volScalarField g0(1/ag + 3*d1*d2/(sqr(ag)*(d1 + d2))*alphaByD);
@@ -54,9 +50,9 @@ Foam::tmp<Foam::volScalarField> Foam::particleParticleDragModels::Syamlal::K
     (
         "Kpp",
         3*(1 + e_)*(pi/2 + Cf_*sqr(pi)/8)
-       *max(alpha1, scalar(0))*rho1*max(alpha2, scalar(0))*rho2
-       *sqr(d1 + d2)*g0*mag(U1 - U2)
-       /(2*pi*(rho1*pow3(d1) + rho2*pow3(d2)))
+       *max(c1.alpha, scalar(0))*c1.rho*max(c2.alpha, scalar(0))*c2.rho
+       *sqr(d1 + d2)*g0*mag(c1.U - c2.U)
+       /(2*pi*(c1.rho*pow3(d1) + c2.rho*pow3(d2)))
     );
 }
 

@@ -25,17 +25,11 @@ Foam::particleParticleDragModels::none::none(const dictionary& dict)
 
 Foam::tmp<Foam::volScalarField> Foam::particleParticleDragModels::none::K
 (
-    const volScalarField& alpha1,
-    const dimensionedScalar&,
-    const dimensionedScalar&,
-    const volVectorField&,
-    const volScalarField&,
-    const dimensionedScalar&,
-    const dimensionedScalar&,
-    const volVectorField&,
+    const classState& c1,
+    const classState&,
     const volScalarField&,
     const volScalarField&
 ) const
 {
-    return volScalarField::New("Kpp", alpha1.mesh(), dimensionedScalar(dimDensity/dimTime, Zero));
+    return volScalarField::New("Kpp", c1.alpha.mesh(), dimensionedScalar(dimDensity/dimTime, Zero));
 }
