@@ -22,9 +22,15 @@ double kelvin(double temperatureC)
 }
 } // namespace
 
-double airDensity(double temperatureC)
+double airDensity(double temperatureC, double pressureKPa)
 {
-    return 354.3/kelvin(temperatureC);
+    if (!(pressureKPa > 0.0))
+    {
+        std::ostringstream os;
+        os << "gas pressure " << pressureKPa << " kPa is not positive";
+        throw std::invalid_argument(os.str());
+    }
+    return 354.3/kelvin(temperatureC)*pressureKPa/standardPressureKPa;
 }
 
 double airViscosity(double temperatureC)
@@ -33,9 +39,9 @@ double airViscosity(double temperatureC)
     return 2.4e-5*((423.15 + 120.0)/(T + 120.0))*std::pow(T/423.15, 1.5);
 }
 
-Gas Gas::air(double temperatureC)
+Gas Gas::air(double temperatureC, double pressureKPa)
 {
-    return Gas{airDensity(temperatureC), airViscosity(temperatureC)};
+    return Gas{airDensity(temperatureC, pressureKPa), airViscosity(temperatureC)};
 }
 
 } // namespace particleDrag

@@ -1,4 +1,5 @@
-// Air properties at 1 atm, as coded by Sherritt 1991 (ROUTINES.C, App. B)
+// Air properties as coded by Sherritt 1991 (ROUTINES.C, App. B) at 1 atm; an
+// ideal gas at other pressures (density in proportion, viscosity unchanged)
 #ifndef PARTICLEDRAG_GASPROPERTIES_HPP
 #define PARTICLEDRAG_GASPROPERTIES_HPP
 
@@ -8,8 +9,12 @@ namespace particleDrag
 //- Standard gravity used throughout (Sherritt's code: GRAVITY = 9.81)
 constexpr double gravity = 9.81;
 
-//- Air density [kg/m3] at 1 atm: rho = 354.3/(T_C + 273.15), T_C in degC
-double airDensity(double temperatureC);
+//- Standard atmosphere [kPa]: the pressure of Sherritt's air
+constexpr double standardPressureKPa = 101.325;
+
+//- Air density [kg/m3]: rho = 354.3/(T_C + 273.15) at 1 atm, T_C in degC,
+//  in proportion to the pressure p [kPa] (ideal gas)
+double airDensity(double temperatureC, double pressureKPa = standardPressureKPa);
 
 //- Air viscosity [Pa s], Sutherland form of airvisc():
 //  mu = 2.4e-5 ((423.15 + 120)/(T_K + 120)) (T_K/423.15)^1.5
@@ -21,7 +26,8 @@ struct Gas
     double density = 1.2086;      //!< kg/m3 (air at 20 degC)
     double viscosity = 1.8194e-5; //!< Pa s  (air at 20 degC)
 
-    static Gas air(double temperatureC);
+    //- Dry air at T degC and p kPa (p > 0)
+    static Gas air(double temperatureC, double pressureKPa = standardPressureKPa);
 };
 
 } // namespace particleDrag

@@ -12,13 +12,15 @@ class GasError(Exception):
     """airProperties missing or refusing the temperature."""
 
 
-def air_properties(t):
-    """(rho, nu) of dry air at t degC as text (6 digits), from airProperties."""
+def air_properties(t, p=None):
+    """(rho, nu) of dry air at t degC (and p kPa; None: 1 atm) as text (6 digits),
+    from airProperties."""
+    cmd = ["airProperties", "-temperature", "%.12g" % t] + ([] if p is None else ["-pressure", "%.12g" % p])
     try:
-        r = subprocess.run(["airProperties", "-temperature", "%.12g" % t], capture_output=True, text=True)
+        r = subprocess.run(cmd, capture_output=True, text=True)
     except OSError as e:
         raise GasError("airProperties is needed for a gas temperature (build the project: ./Allwmake): %s" % e)
     if r.returncode != 0:
-        raise GasError("airProperties -temperature %g: %s" % (t, (r.stderr or r.stdout).strip()))
+        raise GasError("%s: %s" % (" ".join(cmd[:1] + cmd[1:]), (r.stderr or r.stdout).strip()))
     v = dict(line.split() for line in r.stdout.splitlines() if line.strip())
     return v["rho"], v["nu"]

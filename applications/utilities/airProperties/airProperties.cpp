@@ -1,9 +1,10 @@
-// airProperties -temperature T: density, dynamic and kinematic viscosity of
-// dry air at 1 atm and T degC, from the project's one gas model
-// (particleDrag/gasProperties.hpp), one "name value" line each at 6
-// significant digits. curtainCase -gasTemperature writes these into a
-// curtain case's constant/transportProperties, so the curtain tables and the
-// drum model use the same air. Exit 2 on bad input, with the allowed range.
+// airProperties -temperature T [-pressure P]: density, dynamic and kinematic
+// viscosity of dry air at T degC and P kPa (default 1 atm), from the project's
+// one gas model (particleDrag/gasProperties.hpp), one "name value" line each
+// at 6 significant digits. curtainCase -gasTemperature/-gasPressure writes
+// these into a curtain case's constant/transportProperties, so the curtain
+// tables and the drum model use the same air. Exit 2 on bad input, with the
+// allowed range.
 #include "particleDrag/gasProperties.hpp"
 
 #include <cstdio>
@@ -11,27 +12,57 @@
 #include <cstring>
 #include <string>
 
+namespace
+{
+
+//- The number of option `name` = text in [lo, hi]; false (message printed) otherwise
+bool readNumber(const char* name, const char* text, double lo, double hi, const char* units, double& v)
+{
+    char* end = nullptr;
+    v = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(v >= lo && v <= hi))
+    {
+        std::fprintf(stderr, "airProperties: %s '%s': not a %s in [%g, %g] %s\n", name, text,
+                     name + 1, lo, hi, units);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
 int main(int argc, char* argv[])
 {
-    const char* usage = "Usage: airProperties -temperature T   (degC, in [-50, 1500])\n";
+    const char* usage = "Usage: airProperties -temperature T [-pressure P]   "
+                        "(T degC in [-50, 1500]; P kPa in [10, 1000], default 101.325)\n";
     if (argc == 2 && (!std::strcmp(argv[1], "-help") || !std::strcmp(argv[1], "-h")))
     {
         std::fputs(usage, stdout);
         return 0;
     }
-    if (argc != 3 || std::strcmp(argv[1], "-temperature") != 0)
+    double t = 0, p = particleDrag::standardPressureKPa;
+    bool haveT = false;
+    for (int i = 1; i < argc; i += 2)
+    {
+        const bool isT = !std::strcmp(argv[i], "-temperature"), isP = !std::strcmp(argv[i], "-pressure");
+        if ((!isT && !isP) || i + 1 >= argc)
+        {
+            std::fputs(usage, stderr);
+            return 2;
+        }
+        if (isT ? !readNumber("-temperature", argv[i + 1], -50, 1500, "degC", t)
+                : !readNumber("-pressure", argv[i + 1], 10, 1000, "kPa", p))
+        {
+            return 2;
+        }
+        haveT = haveT || isT;
+    }
+    if (!haveT)
     {
         std::fputs(usage, stderr);
         return 2;
     }
-    char* end = nullptr;
-    const double t = std::strtod(argv[2], &end);
-    if (end == argv[2] || *end != '\0' || !(t >= -50.0 && t <= 1500.0))
-    {
-        std::fprintf(stderr, "airProperties: -temperature '%s': not a temperature in [-50, 1500] degC\n", argv[2]);
-        return 2;
-    }
-    const particleDrag::Gas air = particleDrag::Gas::air(t);
+    const particleDrag::Gas air = particleDrag::Gas::air(t, p);
     std::printf("rho %.6g\nmu %.6g\nnu %.6g\n", air.density, air.viscosity, air.viscosity/air.density);
     return 0;
 }

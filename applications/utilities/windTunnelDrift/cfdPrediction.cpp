@@ -243,6 +243,7 @@ std::map<int, double> cfdPredictions
         {
             cmd << " -layerThickness " << quote(o.layerThickness);
         }
+        if (o.gasPressure) cmd << " -gasPressure " << *o.gasPressure;
         if (o.keep) cmd << " -keep";
         r.cmd = cmd.str();
     }

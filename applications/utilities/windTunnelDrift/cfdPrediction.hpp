@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,7 @@ struct CfdOptions
     //! b = S/(rho_b v), thickened where that would exceed a solids fraction of 0.5 at the slot
     //! (the pressureless solids cannot be released near packing)
     std::string layerThickness;
+    std::optional<double> gasPressure;  //!< curtainCase -gasPressure, kPa (none: 1 atm, the template's air)
     //! how a row's advance is measured: "sherritt" (the tunnel's collection rule on the
     //! landing distribution, scoring/tunnelCollection.hpp) or "landed" (the mean
     //! drift of what crossed the floor plane; a class that never lands fails the row)

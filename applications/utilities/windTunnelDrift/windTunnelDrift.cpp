@@ -60,7 +60,7 @@ const char* usage =
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
     "               [-turbulentDispersion none|gradientDiffusion] [-particleParticleDrag none|Syamlal]\n"
     "               [-releaseVelocity V] [-sieveBottom UM]\n"
-    "               [-layerThickness packed|B]\n"
+    "               [-layerThickness packed|B] [-gasPressure P]\n"
     "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
@@ -130,7 +130,8 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
-        "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses"};
+        "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
+        "gasPressure"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -167,6 +168,20 @@ drum::SieveClosure sieveClosure(const Args& a)
         closure.bottomUm = *v;
     }
     return closure;
+}
+
+//- The tunnel's air: 20 degC (Sherritt's code and reference predictions) at
+//  -gasPressure kPa (default 1 atm)
+double gasPressure(const Args& a)
+{
+    if (!a.has("gasPressure")) return particleDrag::standardPressureKPa;
+    const std::string text = a.get("gasPressure");
+    const auto v = numberText(text);
+    if (!v || !(*v >= 10 && *v <= 1000))
+    {
+        throw drum::InputError("", "-gasPressure", "'" + text + "' kPa outside the allowed range [10, 1000]");
+    }
+    return *v;
 }
 
 //- -sizeClasses MATERIAL: the material's size classes as every tool of the
@@ -314,8 +329,10 @@ int predict(const Args& a)
     const fs::path matFile = a.get("materials", defaultMaterials().string());
     const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
     const auto tests = drum::readWindTunnelTests(testsFile, materials);
-    // Sherritt's code and the reference predictions: air at 20 degC, Schiller-Naumann
-    const particleDrag::Gas air = particleDrag::Gas::air(20);
+    // Sherritt's code and the reference predictions: air at 20 degC, Schiller-Naumann;
+    // -gasPressure: the tunnel's site pressure (a table swept at another gas is refused)
+    const double pressure = gasPressure(a);
+    const particleDrag::Gas air = particleDrag::Gas::air(20, pressure);
 
     std::map<int, double> pred;
     if (model == "cfd")
@@ -370,6 +387,7 @@ int predict(const Args& a)
         {
             throw drum::InputError("", "-wakeShare", "an entry of -particleTurbulence SimoninCrowe only");
         }
+        if (a.has("gasPressure")) o.gasPressure = pressure;
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("windTunnelDrift_" + std::to_string(::getpid()))).string());

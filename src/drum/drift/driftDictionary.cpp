@@ -155,8 +155,8 @@ void requireSweepGas(const std::optional<std::string>& g, const std::string& fil
         std::ostringstream os;
         os << "the table was swept in gas of density " << rho << " kg/m3 and kinematic viscosity " << nu
            << " m2/s; the case's gas is " << gas.density << " kg/m3, " << caseNu
-           << " m2/s (allowed: within 5 % of the table's): sweep a table at the case's gas temperature "
-              "(buildDriftTable entry gasTemperature) or give the case the table's";
+           << " m2/s (allowed: within 5 % of the table's): sweep a table at the case's gas "
+              "(buildDriftTable entries gasTemperature, gasPressure) or give the case the table's";
         throw InputError(file, "fixed gas", os.str());
     }
 }

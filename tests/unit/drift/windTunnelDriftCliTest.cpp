@@ -338,6 +338,57 @@ TEST(WindTunnelDriftCli, CfdRunsCurtainCasePerRow)
 }
 
 
+TEST(WindTunnelDriftCli, GasPressureThinsTheTunnelsAirForEveryModel)
+{
+    // the lone particle in thinner air (89 kPa: Calgary) drifts less on every row
+    const fs::path atm = dir()/"isolatedAtm.csv", thin = dir()/"isolated89.csv", vc = dir()/"tableVc89.csv";
+    ASSERT_EQ(run("-tests " + tests + " -out " + atm.string() + " -model isolated").rc, 0);
+    CliRun r = run("-tests " + tests + " -out " + thin.string() + " -model isolated -gasPressure 89");
+    ASSERT_EQ(r.rc, 0) << r.out;
+    const auto a = readPred(atm), b = readPred(thin);
+    ASSERT_EQ(b.size(), 69u);
+    for (const auto& [t, v] : b) EXPECT_LT(v, a.at(t)) << t;
+    // the same air reaches a table model's lone particle: tableVc at V_c/V_g = 1 is isolated
+    r = run("-tests " + tests + " -out " + vc.string() + " -model tableVc -gasPressure 89 -table "
+            + uniformTable(1.0).string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    for (const auto& [t, v] : readPred(vc)) EXPECT_NEAR(v, b.at(t), 2e-4) << t;
+    // a table swept in air at 1 atm is refused in 89 kPa air (12 % lighter), naming the table
+    std::string t = text(uniformTable(0.8));
+    t.replace(t.find("# fixed: "), 9, "# fixed: gas=air(rho=1.2086,nu=1.50534e-05) ");
+    const fs::path atmTable = dir()/"atmTable.csv";
+    std::ofstream(atmTable) << t;
+    const fs::path out = dir()/"refused.csv";
+    r = run("-tests " + tests + " -out " + out.string() + " -model table -gasPressure 89 -table " + atmTable.string());
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("atmTable.csv"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("gasPressure"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+    ASSERT_EQ(run("-tests " + tests + " -out " + out.string() + " -model table -table " + atmTable.string()).rc, 0);
+    fs::remove(out);
+    // the cfd rows run curtainCase in that air
+    const fs::path bin = dir()/"pbin";
+    fs::create_directories(bin);
+    std::ofstream(bin/"curtainCase") << "#!/bin/sh\necho \"$@\" >> " << (dir()/"pargs.txt").string() << "\nexit 3\n";
+    fs::permissions(bin/"curtainCase", fs::perms::owner_all);
+    fs::remove(dir()/"pargs.txt");
+    r = run("-tests " + tests + " -out " + out.string() + " -model cfd -gasPressure 89 -work " + (dir()/"pwork").string(),
+            "PATH=" + bin.string() + ":$PATH");
+    EXPECT_NE(r.rc, 0);
+    const std::string args = text(dir()/"pargs.txt");
+    EXPECT_NE(args.find("-gasPressure 89"), std::string::npos) << args;
+    // out of range
+    for (const char* bad : {"5", "2000", "thin"})
+    {
+        r = run("-tests " + tests + " -out " + out.string() + " -model isolated -gasPressure " + bad);
+        EXPECT_NE(r.rc, 0);
+        EXPECT_NE(r.out.find("-gasPressure"), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("[10, 1000]"), std::string::npos) << r.out;
+        EXPECT_FALSE(fs::exists(out));
+    }
+}
+
+
 TEST(WindTunnelDriftCli, BadInputGivesClearErrorsAndNoOutput)
 {
     const fs::path out = dir()/"keep.csv";

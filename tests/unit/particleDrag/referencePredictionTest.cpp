@@ -3,6 +3,7 @@
 // falladvance(), computed independently): methods (a) V = V_g and
 // (b) V = Eq 142 ratio x V_g, on every shared wind-tunnel test.
 #include "drum/io/projectPaths.hpp"
+#include "particleDrag/gasProperties.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -82,6 +84,17 @@ TEST(ReferencePredictions, AirAt20C)
     // README: rho_g = 1.2086 kg/m3 and mu_g = 1.8194e-5 Pa s from airdens/airvisc
     EXPECT_NEAR(airDensity(20.0), 1.2086, 5e-5);
     EXPECT_NEAR(airViscosity(20.0), 1.8194e-5, 5e-9);
+}
+
+TEST(ReferencePredictions, AirAtAnotherPressureIsAnIdealGas)
+{
+    // density in proportion to the pressure, viscosity unchanged
+    EXPECT_DOUBLE_EQ(airDensity(20.0, 89.0), airDensity(20.0)*89.0/101.325);
+    EXPECT_DOUBLE_EQ(airDensity(20.0, 101.325), airDensity(20.0));
+    EXPECT_DOUBLE_EQ(Gas::air(80.0, 50.0).viscosity, Gas::air(80.0).viscosity);
+    EXPECT_DOUBLE_EQ(Gas::air(80.0, 50.0).density, airDensity(80.0)*50.0/101.325);
+    EXPECT_THROW(airDensity(20.0, 0.0), std::invalid_argument);
+    EXPECT_THROW(airDensity(20.0, -1.0), std::invalid_argument);
 }
 
 TEST(ReferencePredictions, IsolatedAndSherrittCorrection)
