@@ -21,6 +21,6 @@ def air_properties(t, p=None):
     except OSError as e:
         raise GasError("airProperties is needed for a gas temperature (build the project: ./Allwmake): %s" % e)
     if r.returncode != 0:
-        raise GasError("%s: %s" % (" ".join(cmd[:1] + cmd[1:]), (r.stderr or r.stdout).strip()))
+        raise GasError("%s: %s" % (" ".join(cmd), (r.stderr or r.stdout).strip()))
     v = dict(line.split() for line in r.stdout.splitlines() if line.strip())
     return v["rho"], v["nu"]

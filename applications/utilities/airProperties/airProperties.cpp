@@ -51,7 +51,8 @@ int main(int argc, char* argv[])
             return 2;
         }
         if (isT ? !readNumber("-temperature", argv[i + 1], -50, 1500, "degC", t)
-                : !readNumber("-pressure", argv[i + 1], 10, 1000, "kPa", p))
+                : !readNumber("-pressure", argv[i + 1], particleDrag::minPressureKPa,
+                              particleDrag::maxPressureKPa, "kPa", p))
         {
             return 2;
         }

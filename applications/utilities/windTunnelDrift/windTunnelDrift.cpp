@@ -35,6 +35,7 @@
 #include "drum/io/inputError.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "scoring/windTunnelPrediction.hpp"
+#include "particleDrag/gasProperties.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -177,9 +178,12 @@ double gasPressure(const Args& a)
     if (!a.has("gasPressure")) return particleDrag::standardPressureKPa;
     const std::string text = a.get("gasPressure");
     const auto v = numberText(text);
-    if (!v || !(*v >= 10 && *v <= 1000))
+    constexpr double lo = particleDrag::minPressureKPa, hi = particleDrag::maxPressureKPa;
+    if (!v || !(*v >= lo && *v <= hi))
     {
-        throw drum::InputError("", "-gasPressure", "'" + text + "' kPa outside the allowed range [10, 1000]");
+        std::ostringstream os;
+        os << "'" << text << "' kPa outside the allowed range [" << lo << ", " << hi << "]";
+        throw drum::InputError("", "-gasPressure", os.str());
     }
     return *v;
 }
