@@ -235,9 +235,8 @@ std::map<int, double> cfdPredictions
         if (!o.releaseVelocity.empty()) cmd << " -releaseVelocity " << quote(o.releaseVelocity);
         if (o.layerThickness == "packed")
         {
-            const double v = o.releaseVelocity.empty() ? 1.0 : std::stod(o.releaseVelocity);
-            const double packing = std::min(m.bulkDensity/m.particleDensity, 0.5);
-            cmd << " -layerThickness " << t.spillRate/(packing*m.particleDensity*v);
+            // curtainCase sizes the layer from the spill, the bulk density and the release speed
+            cmd << " -layerThickness packed -bulkDensity " << m.bulkDensity;
         }
         else if (!o.layerThickness.empty())
         {

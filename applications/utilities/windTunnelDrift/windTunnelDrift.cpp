@@ -189,7 +189,8 @@ double gasPressure(const Args& a)
 }
 
 //- -sizeClasses MATERIAL: the material's size classes as every tool of the
-//  project represents them (Table A.1, open bins closed), for the sweep
+//  project represents them (Table A.1, open bins closed), and its particle and
+//  bulk densities, for the sweep
 //  dictionaries (buildDriftTable's `sizeClasses material;`), 6 digits
 int sizeClasses(const Args& a)
 {
@@ -217,7 +218,8 @@ int sizeClasses(const Args& a)
         }
         std::cout << "\n";
     };
-    std::cout << "material: " << name << "\nparticleDensity: " << it->second.particleDensity << "\n";
+    std::cout << "material: " << name << "\nparticleDensity: " << it->second.particleDensity
+              << "\nbulkDensity: " << it->second.bulkDensity << "\n";
     line("diameter", [](const drum::SieveClass& c) { return c.diameter; });
     line("massFractions", [](const drum::SieveClass& c) { return c.massFraction; });
     return 0;
