@@ -250,15 +250,18 @@ std::vector<std::string> commaList(const std::string& list, const std::string& o
 //  buildDriftTable's `material` entry) serves that material; a table
 //  without one serves every other material. Two tables for one material,
 //  two generic tables, or a table naming a material the materials file
-//  does not have: InputError. Without -table: the shipped generic table
-//  and the shipped material tables (etc/defaults/driftTables/materialTables),
-//  so each material is served from its own. Other models ignore -table
+//  does not have: InputError. Without -table: the shipped tables swept in
+//  the run's air (the generic table and the material tables of
+//  etc/defaults/driftTables/materialTables and its subfolders, each kept
+//  when its recorded gas is within 5 % of `air`), so each material is
+//  served from its own table in that air. Other models ignore -table
 //  (empty map), and so does auto without one (its table is then optional).
 std::map<std::string, fs::path> tablesByMaterial
 (
     const std::string& list,
     const std::map<std::string, drum::WindTunnelMaterial>& materials,
-    const std::string& model
+    const std::string& model,
+    const particleDrag::Gas& air
 )
 {
     std::map<std::string, fs::path> out;
@@ -268,19 +271,41 @@ std::map<std::string, fs::path> tablesByMaterial
     for (const auto& f : commaList(list, "-table")) files.push_back(f);
     if (files.empty())
     {
-        files.push_back(drum::defaultDriftTableFile());
+        std::vector<fs::path> shipped{drum::defaultDriftTableFile()}, own;
         const fs::path dir = drum::defaultDriftTableFile().parent_path()/"materialTables";
-        std::vector<fs::path> own;
         if (fs::is_directory(dir))
         {
-            for (const auto& e : fs::directory_iterator(dir))
+            for (const auto& e : fs::recursive_directory_iterator(dir))
             {
                 const std::string n = e.path().filename().string();
-                if (n.size() > 9 && n.compare(n.size() - 9, 9, "Table.csv") == 0) own.push_back(e.path());
+                if (e.is_regular_file() && n.size() > 9 && n.compare(n.size() - 9, 9, "Table.csv") == 0)
+                {
+                    own.push_back(e.path());
+                }
             }
         }
         std::sort(own.begin(), own.end());   // the same order, whatever the file system's
-        files.insert(files.end(), own.begin(), own.end());
+        shipped.insert(shipped.end(), own.begin(), own.end());
+        for (const auto& f : shipped)
+        {
+            try
+            {
+                drum::requireTableGas(drum::DriftTable::read(f), air);
+                files.push_back(f);
+            }
+            catch (const drum::InputError&)
+            {
+                // swept in other air: not this run's table
+            }
+        }
+        if (files.empty())
+        {
+            std::ostringstream os;
+            os << "no shipped table was swept in this air (gas density " << air.density
+               << " kg/m3; a table's within 5 %): give -table FILE[,FILE...] swept in it "
+                  "(buildDriftTable entry gasPressure)";
+            throw drum::InputError(dir.string(), "-table", os.str());
+        }
     }
     fs::path generic;
     for (const auto& f : files)
@@ -416,7 +441,7 @@ int predict(const Args& a)
         if (a.has("constants")) s.constants = a.get("constants");
         s.outside = drum::parseOutOfRangePolicy(a.get("outside", "refuse"), "-outside");
         // -table FILE[,FILE...]: which table serves which material
-        const auto tableFor = tablesByMaterial(a.get("table"), materials, model);
+        const auto tableFor = tablesByMaterial(a.get("table"), materials, model, air);
         // One model per material: the porousSheet curtain is the material's
         // PSD; a table model is built once per table file (one read, one
         // clamp count per table)

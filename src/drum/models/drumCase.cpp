@@ -229,10 +229,12 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
 
     const YAML::Node gas = r.section(root, "gas", false);
     const YAML::Node g = gas ? gas : YAML::Node(YAML::NodeType::Map);
-    r.only(g, "gas", {"flow", "massRate", "temperature_C"});
+    r.only(g, "gas", {"flow", "massRate", "temperature_C", "pressure_kPa"});
     c.gas.counterCurrent = r.word(g, "gas", "flow", {"coCurrent", "counterCurrent"}, std::string("counterCurrent")) == "counterCurrent";
     c.gas.massRate = r.number(g, "gas", "massRate", 0, 1e4, 0.0);
     c.gas.temperatureC = r.number(g, "gas", "temperature_C", -50, 1500, 20.0);
+    c.gas.pressureKPa = r.number(g, "gas", "pressure_kPa", particleDrag::minPressureKPa,
+                                 particleDrag::maxPressureKPa, particleDrag::standardPressureKPa);
 
     r.section(root, "model");
 

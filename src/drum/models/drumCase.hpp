@@ -10,6 +10,7 @@
 #include "drum/flights/sherritt/sherrittFlightSpec.hpp"
 #include "drum/io/dictReader.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
+#include "particleDrag/gasProperties.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -57,6 +58,10 @@ struct CaseGas
 {
     bool counterCurrent = true;
     double massRate = 0, temperatureC = 20;
+    double pressureKPa = particleDrag::standardPressureKPa;   //!< a dryer above sea level: lower
+
+    //- Dry air at the case's temperature and pressure (particleDrag::Gas::air)
+    particleDrag::Gas air() const { return particleDrag::Gas::air(temperatureC, pressureKPa); }
 };
 
 struct TracerFile

@@ -389,6 +389,62 @@ TEST(WindTunnelDriftCli, GasPressureThinsTheTunnelsAirForEveryModel)
 }
 
 
+TEST(WindTunnelDriftCli, WithoutTablesEachMaterialIsServedByTheShippedTableSweptInTheRunsAir)
+{
+    // the shipped material tables: at 1 atm those of materialTables/, in the tunnel's
+    // site air (89 kPa) those of materialTables/siteAir/; each answer is the one the
+    // explicit -table list of that air gives, bit for bit
+    const fs::path mt = drum::defaultsDir()/"driftTables"/"materialTables";
+    const auto list = [&](const fs::path& folder)
+    {
+        return (folder/"rawShaleTable.csv").string() + "," + (folder/"sandTable.csv").string() + ","
+            + (folder/"spentShaleTable.csv").string();
+    };
+    for (const auto& [pressure, folder] : {std::pair<std::string, fs::path>{"", mt}, {" -gasPressure 89", mt/"siteAir"}})
+    {
+        const fs::path implicit = dir()/"implicit.csv", given = dir()/"given.csv";
+        CliRun r = run("-tests " + tests + " -out " + implicit.string() + " -model table -outside clamp" + pressure);
+        ASSERT_EQ(r.rc, 0) << r.out;
+        r = run("-tests " + tests + " -out " + given.string() + " -model table -outside clamp" + pressure
+                + " -table " + list(folder));
+        ASSERT_EQ(r.rc, 0) << r.out;
+        EXPECT_EQ(readPred(implicit), readPred(given)) << pressure;
+        ASSERT_EQ(readPred(implicit).size(), 69u);
+    }
+    // air no shipped table was swept in: refused, naming the folder searched
+    const fs::path out = dir()/"none.csv";
+    const CliRun r = run("-tests " + tests + " -out " + out.string() + " -model table -gasPressure 50");
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("no shipped table was swept in this air"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("materialTables"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+}
+
+
+TEST(WindTunnelDriftCli, CfdRowsPassThePackedLayerWithTheMaterialsBulkDensity)
+{
+    // -layerThickness packed: curtainCase sizes each row's layer from the material's
+    // bulk density (Table A.1: sand 1600, the shales 860 kg/m3)
+    const fs::path bin = dir()/"lbin", argsFile = dir()/"largs.txt", out = dir()/"packed.csv";
+    fs::create_directories(bin);
+    std::ofstream(bin/"curtainCase") << "#!/bin/sh\necho \"$@\" >> " << argsFile.string() << "\nexit 3\n";
+    fs::permissions(bin/"curtainCase", fs::perms::owner_all);
+    fs::remove(argsFile);
+    const CliRun r = run("-tests " + tests + " -out " + out.string() + " -model cfd -skipFailed -layerThickness packed -work "
+                         + (dir()/"lwork").string(), "PATH=" + bin.string() + ":$PATH");
+    EXPECT_NE(r.rc, 0);
+    std::istringstream lines(text(argsFile));
+    std::size_t n = 0;
+    for (std::string line; std::getline(lines, line); ++n)
+    {
+        const bool sand = line.find("-density 2650") != std::string::npos;
+        EXPECT_NE(line.find(sand ? "-layerThickness packed -bulkDensity 1600" : "-layerThickness packed -bulkDensity 860"),
+                  std::string::npos) << line;
+    }
+    EXPECT_EQ(n, 69u);
+}
+
+
 TEST(WindTunnelDriftCli, BadInputGivesClearErrorsAndNoOutput)
 {
     const fs::path out = dir()/"keep.csv";

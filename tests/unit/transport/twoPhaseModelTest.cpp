@@ -1,5 +1,6 @@
 // Sherritt 1991 two-phase model: analytic EAD results, mass balances,
 // closed forms of Sherritt 1991 §3.6-3.7, DRUM1 inversion, axial solve, bad input.
+#include "drum/drift/driftModel.hpp"
 #include "drum/flights/sherritt/sherrittFlightShapes.hpp"
 #include "drum/flights/sherritt/sherrittFlightSurface.hpp"
 #include "drum/io/inputError.hpp"
@@ -10,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 using namespace drum;
@@ -439,4 +441,41 @@ TEST(TwoPhaseModel, RefusesBadInput)
     c = sheikhCase();
     c.material.massFractions.pop_back();
     EXPECT_THROW(TwoPhaseModel{c}, InputError);
+}
+
+TEST(TwoPhaseModel, GasPressureSetsTheGasDensityOfTheVelocityAndTheDrift)
+{
+    // an ideal gas: at pressure p the gas of mass rate m moves as fast as the gas
+    // of mass rate m p0/p at p0 (its density in proportion to the pressure), and
+    // the drift is Eq 142's in air at p
+    const double p = 50, p0 = particleDrag::standardPressureKPa, F0 = 0.015;
+    auto thin = sheikhCase();
+    thin.gas = {0.02, 20, GasFlow::cocurrent, p};
+    auto given = thin;     // the same drift model, given instead of built from the gas
+    given.options.drift = std::make_shared<SherrittSheetDrift>(particleDrag::Gas::air(20, p));
+    auto dense = given;    // at p0 with the mass rate of the same velocity
+    dense.gas.pressureKPa = p0;
+    dense.gas.massRate = thin.gas.massRate*p0/p;
+    auto sea = thin;
+    sea.gas.pressureKPa = p0;
+    const auto a = TwoPhaseModel(thin).solveConstantHoldup(F0).front();
+    const auto b = TwoPhaseModel(given).solveConstantHoldup(F0).front();
+    const auto c = TwoPhaseModel(dense).solveConstantHoldup(F0).front();
+    const auto d = TwoPhaseModel(sea).solveConstantHoldup(F0).front();
+    EXPECT_EQ(a.meanResidenceTime, b.meanResidenceTime);
+    EXPECT_NEAR(c.meanResidenceTime, a.meanResidenceTime, 1e-9*a.meanResidenceTime);
+    EXPECT_NEAR(c.airborneFraction, a.airborneFraction, 1e-9);
+    // cocurrent: the thinner, faster gas carries the solids further per fall
+    EXPECT_LT(a.meanResidenceTime, 0.99*d.meanResidenceTime);
+    auto bad = thin;
+    bad.gas.pressureKPa = 5;
+    try
+    {
+        TwoPhaseModel{bad};
+        ADD_FAILURE() << "5 kPa accepted";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("gas.pressure_kPa"), std::string::npos) << e.what();
+    }
 }

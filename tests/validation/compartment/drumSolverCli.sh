@@ -77,6 +77,7 @@ bad 's/^  partition: leeCorrelations/&\n  flightHoldup: bedFilled/' "model.fligh
 
 mkdir -p "$work/bad"
 bad 's/feedRate: .*/feedRate: -3/' "material.feedRate.*range"
+bad 's/^  massRate: 0/&\n  pressure_kPa: 5/' "gas.pressure_kPa.*range"
 bad 's/feedRate: .*/feedRate: 0/' "material.feedRate.*range"
 bad 's/slope_deg: .*/slope_deg: 35/' "drum.slope_deg.*range"
 bad 's/speed_rpm: .*/speed_rpm: 0/' "drum.speed_rpm.*range"
@@ -146,6 +147,16 @@ head -1 "$work/twoPhase/results/summary.csv" | grep -q "^holdup_kg,airborne_frac
 # T = holdup/feed (Sherritt Eq 31)
 awk -F, 'NR==2 { r = $1/0.02/$3; if (r < 0.999 || r > 1.001) { print r; exit 1 } }' "$work/twoPhase/results/summary.csv" \
     || fail "twoPhase T != H/F"
+# the gas's pressure reaches the model: the same cocurrent gas mass rate at half an
+# atmosphere is twice as fast and carries the solids further (shorter residence time)
+for p in 101.325 50; do
+    mkdir -p "$work/twoPhase_p$p"
+    sed "s/^gas: .*/gas: {flow: coCurrent, massRate: 0.02, pressure_kPa: $p}/" "$work/twoPhase/drumDict" \
+        > "$work/twoPhase_p$p/drumDict"
+    "$solver" -case "$work/twoPhase_p$p" > "$work/twoPhase_p$p/log" 2>&1 || { cat "$work/twoPhase_p$p/log"; fail "twoPhase at $p kPa did not run"; }
+done
+paste -d, "$work/twoPhase_p101.325/results/summary.csv" "$work/twoPhase_p50/results/summary.csv" | awk -F, 'NR==1 { n = NF/2 }
+    NR==2 { if (!($(3 + n) < 0.95*$3)) { print $3, $(3 + n); exit 1 } }' || fail "twoPhase: 50 kPa gas did not shorten the residence time"
 sed -i 's/repose_deg: 35.69/moisture: {inlet: 0.01, outlet: 0.001}/' "$work/twoPhase/drumDict"
 rm -rf "$work/twoPhase/results"
 if "$solver" -case "$work/twoPhase" > "$work/twoPhase/log" 2>&1; then fail "twoPhase accepted a moisture profile"; fi

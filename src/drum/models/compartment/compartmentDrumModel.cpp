@@ -294,7 +294,7 @@ void CompartmentDrumModel::runWith
     std::vector<LeeSliceData> data;
     if (s_.partition == "flightModel")
     {
-        const particleDrag::Gas air = particleDrag::Gas::air(c_.gas.temperatureC);
+        const particleDrag::Gas air = c_.gas.air();
         FlightModelPartition fp;
         fp.drift = makeDriftModel(*s_.drift, air, {}, "model.drift");
         // Mean gas velocity over the free cross-section (holdup neglected)

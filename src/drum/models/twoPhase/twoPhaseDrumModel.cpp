@@ -103,6 +103,7 @@ TwoPhaseCase twoPhaseCase(const DrumCase& c, const TwoPhaseSettings& s)
     tc.material.massFractions = c.material.fractions;
     tc.gas.massRate = c.gas.massRate;
     tc.gas.temperatureC = c.gas.temperatureC;
+    tc.gas.pressureKPa = c.gas.pressureKPa;
     tc.gas.direction = c.gas.counterCurrent ? GasFlow::countercurrent : GasFlow::cocurrent;
     if (s.drift.model == "segmentVc")
     {
@@ -111,7 +112,7 @@ TwoPhaseCase twoPhaseCase(const DrumCase& c, const TwoPhaseSettings& s)
                          "partition (Lee's flight and release angles); the twoPhase model takes isolated, sherritt, "
                          "table, tableVc, porousSheet or auto");
     }
-    tc.options.drift = makeDriftModel(s.drift, particleDrag::Gas::air(c.gas.temperatureC), {}, "model.drift");
+    tc.options.drift = makeDriftModel(s.drift, c.gas.air(), {}, "model.drift");
     tc.options.imposedDenseFlow = s.imposedDenseFlow;
     tc.options.axialSteps = s.axialSteps;
     return tc;

@@ -13,6 +13,7 @@
 #include "drum/numerics/constants.hpp"
 #include "drum/flights/sherritt/sherrittFlightProfile.hpp"
 #include "drum/transport/twoPhase/twoPhaseSurfaceClosure.hpp"
+#include "particleDrag/gasProperties.hpp"
 
 #include <memory>
 #include <optional>
@@ -52,6 +53,7 @@ struct TwoPhaseGas
     double massRate = 0;        //!< kg/s (0: no gas)
     double temperatureC = 20;   //!< for Sherritt's air rho(T), mu(T)
     GasFlow direction = GasFlow::cocurrent;
+    double pressureKPa = particleDrag::standardPressureKPa;   //!< rho in proportion (ideal gas)
 };
 
 struct TwoPhaseOptions

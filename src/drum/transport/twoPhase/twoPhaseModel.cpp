@@ -135,7 +135,8 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     const auto& gas = case_.gas;
     requireInRange(gas.massRate, 0.0, 1e4, "gas.massRate", file);
     requireInRange(gas.temperatureC, -50.0, 1500.0, "gas.temperature_C", file);
-    const particleDrag::Gas air = particleDrag::Gas::air(gas.temperatureC);
+    requireInRange(gas.pressureKPa, particleDrag::minPressureKPa, particleDrag::maxPressureKPa, "gas.pressure_kPa", file);
+    const particleDrag::Gas air = particleDrag::Gas::air(gas.temperatureC, gas.pressureKPa);
     gasDensity_ = air.density;
     drift_ = case_.options.drift ? case_.options.drift : std::make_shared<SherrittSheetDrift>(air);
     const bool counter = gas.direction == GasFlow::countercurrent && gas.massRate > 0;
