@@ -74,6 +74,18 @@ std::string text(const fs::path& f)
     return ss.str();
 }
 
+//- A stand-in curtainCase in dir()/BIN that appends its arguments to argsFile
+//  (emptied first) and fails; returns the PATH setting that puts it first
+std::string recordingCurtainCase(const std::string& bin, const fs::path& argsFile)
+{
+    const fs::path b = dir()/bin;
+    fs::create_directories(b);
+    std::ofstream(b/"curtainCase") << "#!/bin/sh\necho \"$@\" >> " << argsFile.string() << "\nexit 3\n";
+    fs::permissions(b/"curtainCase", fs::perms::owner_all);
+    fs::remove(argsFile);
+    return "PATH=" + b.string() + ":$PATH";
+}
+
 // A table covering the wind tunnel with a uniform V_c/V_g = r
 fs::path uniformTable(double r)
 {
@@ -367,13 +379,8 @@ TEST(WindTunnelDriftCli, GasPressureThinsTheTunnelsAirForEveryModel)
     ASSERT_EQ(run("-tests " + tests + " -out " + out.string() + " -model table -table " + atmTable.string()).rc, 0);
     fs::remove(out);
     // the cfd rows run curtainCase in that air
-    const fs::path bin = dir()/"pbin";
-    fs::create_directories(bin);
-    std::ofstream(bin/"curtainCase") << "#!/bin/sh\necho \"$@\" >> " << (dir()/"pargs.txt").string() << "\nexit 3\n";
-    fs::permissions(bin/"curtainCase", fs::perms::owner_all);
-    fs::remove(dir()/"pargs.txt");
     r = run("-tests " + tests + " -out " + out.string() + " -model cfd -gasPressure 89 -work " + (dir()/"pwork").string(),
-            "PATH=" + bin.string() + ":$PATH");
+            recordingCurtainCase("pbin", dir()/"pargs.txt"));
     EXPECT_NE(r.rc, 0);
     const std::string args = text(dir()/"pargs.txt");
     EXPECT_NE(args.find("-gasPressure 89"), std::string::npos) << args;
@@ -425,13 +432,9 @@ TEST(WindTunnelDriftCli, CfdRowsPassThePackedLayerWithTheMaterialsBulkDensity)
 {
     // -layerThickness packed: curtainCase sizes each row's layer from the material's
     // bulk density (Table A.1: sand 1600, the shales 860 kg/m3)
-    const fs::path bin = dir()/"lbin", argsFile = dir()/"largs.txt", out = dir()/"packed.csv";
-    fs::create_directories(bin);
-    std::ofstream(bin/"curtainCase") << "#!/bin/sh\necho \"$@\" >> " << argsFile.string() << "\nexit 3\n";
-    fs::permissions(bin/"curtainCase", fs::perms::owner_all);
-    fs::remove(argsFile);
+    const fs::path argsFile = dir()/"largs.txt", out = dir()/"packed.csv";
     const CliRun r = run("-tests " + tests + " -out " + out.string() + " -model cfd -skipFailed -layerThickness packed -work "
-                         + (dir()/"lwork").string(), "PATH=" + bin.string() + ":$PATH");
+                         + (dir()/"lwork").string(), recordingCurtainCase("lbin", argsFile));
     EXPECT_NE(r.rc, 0);
     std::istringstream lines(text(argsFile));
     std::size_t n = 0;
