@@ -267,9 +267,11 @@ std::map<std::string, fs::path> tablesByMaterial
     std::map<std::string, fs::path> out;
     // auto takes a table when given one (else the default, if present)
     if (model != "table" && model != "tableVc" && !(model == "auto" && !list.empty())) return out;
-    std::vector<fs::path> files;
-    for (const auto& f : commaList(list, "-table")) files.push_back(f);
-    if (files.empty())
+    // each table read once: its header says which material it serves (and, for the
+    // shipped ones, in which air it was swept)
+    std::vector<std::pair<fs::path, drum::DriftTable>> tables;
+    for (const auto& f : commaList(list, "-table")) tables.emplace_back(f, drum::DriftTable::read(f));
+    if (tables.empty())
     {
         std::vector<fs::path> shipped{drum::defaultDriftTableFile()}, own;
         const fs::path dir = drum::defaultDriftTableFile().parent_path()/"materialTables";
@@ -288,17 +290,10 @@ std::map<std::string, fs::path> tablesByMaterial
         shipped.insert(shipped.end(), own.begin(), own.end());
         for (const auto& f : shipped)
         {
-            try
-            {
-                drum::requireTableGas(drum::DriftTable::read(f), air);
-                files.push_back(f);
-            }
-            catch (const drum::InputError&)
-            {
-                // swept in other air: not this run's table
-            }
+            auto t = drum::DriftTable::read(f);
+            if (drum::sweepGasMatches(t.fixedSetting("gas"), air)) tables.emplace_back(f, std::move(t));
         }
-        if (files.empty())
+        if (tables.empty())
         {
             std::ostringstream os;
             os << "no shipped table was swept in this air (gas density " << air.density
@@ -308,9 +303,9 @@ std::map<std::string, fs::path> tablesByMaterial
         }
     }
     fs::path generic;
-    for (const auto& f : files)
+    for (const auto& [f, table] : tables)
     {
-        const auto h = drum::DriftTable::read(f).header();
+        const auto& h = table.header();
         const auto it = h.find("material");
         if (it == h.end())
         {

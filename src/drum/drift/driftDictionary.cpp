@@ -137,21 +137,34 @@ DriftSettings readDriftSettings
 }
 
 
+namespace
+{
+//- The value of KEY= in a sweep's gas setting, as the table writers record it:
+//  gas=air(rho=R,nu=N[,T=..C][,p=..kPa]) (NaN when absent)
+double sweepGasValue(const std::string& g, const std::string& key)
+{
+    const auto k = g.find(key + "=");
+    return k == std::string::npos ? std::numeric_limits<double>::quiet_NaN()
+                                  : std::strtod(g.c_str() + k + key.size() + 1, nullptr);
+}
+} // namespace
+
+
+bool sweepGasMatches(const std::optional<std::string>& g, const particleDrag::Gas& gas)
+{
+    if (!g) return true;
+    const double tol = 0.05;
+    return !(std::abs(sweepGasValue(*g, "rho")/gas.density - 1) > tol
+             || std::abs(sweepGasValue(*g, "nu")/(gas.viscosity/gas.density) - 1) > tol);
+}
+
+
 void requireSweepGas(const std::optional<std::string>& g, const std::string& file, const particleDrag::Gas& gas)
 {
-    // the sweep's gas, as the table writers record it: gas=air(rho=R,nu=N[,T=..C])
-    if (!g) return;
-    const auto value = [&](const std::string& key)
+    if (!sweepGasMatches(g, gas))
     {
-        const auto k = g->find(key + "=");
-        return k == std::string::npos ? std::numeric_limits<double>::quiet_NaN()
-                                      : std::strtod(g->c_str() + k + key.size() + 1, nullptr);
-    };
-    const double rho = value("rho"), nu = value("nu");
-    const double caseNu = gas.viscosity/gas.density;
-    const double tol = 0.05;
-    if (std::abs(rho/gas.density - 1) > tol || std::abs(nu/caseNu - 1) > tol)
-    {
+        const double rho = sweepGasValue(*g, "rho"), nu = sweepGasValue(*g, "nu");
+        const double caseNu = gas.viscosity/gas.density;
         std::ostringstream os;
         os << "the table was swept in gas of density " << rho << " kg/m3 and kinematic viscosity " << nu
            << " m2/s; the case's gas is " << gas.density << " kg/m3, " << caseNu

@@ -58,6 +58,9 @@ struct DriftSettings
 void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas);
 //- The same check on a `gas=air(rho=..,nu=..)` setting of any table file
 void requireSweepGas(const std::optional<std::string>& gasSetting, const std::string& file, const particleDrag::Gas& gas);
+//- Whether that setting lies within 5 % of `gas` (true without one): the test
+//  the two checks above make
+bool sweepGasMatches(const std::optional<std::string>& gasSetting, const particleDrag::Gas& gas);
 
 //- Every drift-model name makeDriftModel knows
 const std::vector<std::string>& driftModelNames();
