@@ -2,7 +2,7 @@
 
 #include "drum/io/csv.hpp"
 #include "drum/io/inputError.hpp"
-#include "scoring/tunnelCollection.hpp"
+#include "scoring/landingFile.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -115,73 +115,8 @@ double readLandingAdvance
     const std::vector<double>& fractions
 )
 {
-    const std::string f = file.string();
-    if (!fs::exists(file)) throw InputError(f, "", "curtainCase wrote no landing distribution");
-    std::vector<drum::ClassLanding> classes(fractions.size());
-    std::vector<bool> released(fractions.size(), false);
-    try
-    {
-        io::CSVReader<7, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(f);
-        in.read_header(io::ignore_no_column, "fall_height_m", "class", "x_low_m", "x_high_m",
-                       "mass_flow_kg_s", "fraction_of_inflow", "x_centre_m");
-        std::string ys, cls, lo, hi, mass, frac, xc;
-        while (in.read_row(ys, cls, lo, hi, mass, frac, xc))
-        {
-            const std::string where = "line " + std::to_string(in.get_file_line());
-            double y;
-            std::size_t i;
-            try
-            {
-                y = std::stod(ys);
-                if (cls.size() < 2 || cls[0] != 'c') throw std::invalid_argument(cls);
-                i = std::stoul(cls.substr(1));
-            }
-            catch (const std::exception&)
-            {
-                throw InputError(f, where, "fall_height_m must be a number and class c<index>");
-            }
-            if (std::abs(y - fallHeight) > 1e-6*std::max(1.0, fallHeight)) continue;
-            if (i >= fractions.size())
-            {
-                throw InputError(f, where, "class " + cls + " beyond the " + std::to_string(fractions.size())
-                                 + " classes of the row");
-            }
-            if (lo == "lost") continue;        // the rule counts the loss by the feed's balance
-            try
-            {
-                if (lo == "slot")
-                {
-                    classes[i].releaseCentre = std::stod(xc);
-                    released[i] = true;
-                    continue;
-                }
-                drum::ClassLanding::Bin b;
-                b.xLow = std::stod(lo);
-                b.xHigh = std::stod(hi);
-                b.fraction = std::stod(frac);
-                b.xCentre = xc == "nan" || xc == "NaN" ? 0.5*(b.xLow + b.xHigh) : std::stod(xc);
-                classes[i].bins.push_back(b);
-            }
-            catch (const std::exception&)
-            {
-                throw InputError(f, where, "x_low_m, x_high_m, fraction_of_inflow and x_centre_m must be numbers");
-            }
-        }
-    }
-    catch (const io::error::base& e)
-    {
-        throw InputError(f, "", std::string("malformed curtainLanding.csv: ") + e.what());
-    }
-    for (std::size_t i = 0; i < fractions.size(); ++i)
-    {
-        if (!released[i] || classes[i].bins.empty())
-        {
-            std::ostringstream os;
-            os << "no slot row or no bins of class c" << i << " at fall height " << fallHeight << " m";
-            throw InputError(f, "class rows", os.str());
-        }
-    }
-    return drum::collectedAdvance(classes, fractions, drum::TunnelFloor{}, f).advance;
+    const auto classes = drum::landingAt(drum::readLandingFile(file), fallHeight, fractions.size(), file);
+    return drum::collectedAdvance(classes, fractions, drum::TunnelFloor{}, file.string()).advance;
 }
 
 

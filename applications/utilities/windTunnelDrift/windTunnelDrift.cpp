@@ -33,6 +33,7 @@
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
+#include "scoring/landingFile.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "scoring/windTunnelPrediction.hpp"
 #include "particleDrag/gasProperties.hpp"
@@ -68,6 +69,7 @@ const char* usage =
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-byMaterial FILE.csv]\n"
     "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
+    "  windTunnelDrift -tunnelReading LANDING.csv -out READING.csv\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
 
 struct Args
@@ -132,7 +134,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
         "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
-        "gasPressure"};
+        "gasPressure", "tunnelReading"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -222,6 +224,29 @@ int sizeClasses(const Args& a)
               << "\nbulkDensity: " << it->second.bulkDensity << "\n";
     line("diameter", [](const drum::SieveClass& c) { return c.diameter; });
     line("massFractions", [](const drum::SieveClass& c) { return c.massFraction; });
+    return 0;
+}
+
+
+//- -tunnelReading LANDING.csv -out READING.csv: what Sherritt's tunnel would
+//  record for each size class of a curtainCase run alone (the collection
+//  rule, scoring/tunnelCollection.hpp, on its curtainLanding.csv) at every
+//  fall height of the file; buildDriftTable tabulates it as tunnel_drift_m
+int tunnelReading(const Args& a)
+{
+    const fs::path file = a.get("tunnelReading");
+    const fs::path out = a.need("out");
+    drum::CsvTable table({"fall_height_m", "class_index", "tunnel_drift_m", "suspended_fraction",
+                          "fixed_fraction", "lost_fraction"});
+    for (const auto& [y, classes] : drum::readLandingFile(file))
+    {
+        for (std::size_t i = 0; i < classes.size(); ++i)
+        {
+            const auto r = drum::classCollectedAdvance(classes[i], drum::TunnelFloor{}, file.string(), i);
+            table.addRow({y, double(i), r.advance, r.suspended, r.fixed, r.lost});
+        }
+    }
+    table.write(out);
     return 0;
 }
 
@@ -336,6 +361,27 @@ std::map<std::string, fs::path> tablesByMaterial
     return out;
 }
 
+//- -collection sherritt|landed (models cfd and table): how a row's advance
+//  is measured. sherritt (default): as the tunnel measured it, its collection
+//  rule on the landing distribution (cfd: each run's; table: the table's
+//  tunnel_drift_m column, that rule on each swept case); landed: the mean
+//  drift of what crossed the fall height
+std::string collection(const Args& a, const std::string& model)
+{
+    if (!a.has("collection")) return "sherritt";
+    const std::string c = a.get("collection");
+    if (model != "cfd" && model != "table")
+    {
+        throw drum::InputError("", "-collection", "an option of the models cfd and table only (model " + model
+                               + " gives each class one drift)");
+    }
+    if (c != "sherritt" && c != "landed")
+    {
+        throw drum::InputError("", "-collection", "'" + c + "': valid names are sherritt, landed");
+    }
+    return c;
+}
+
 int predict(const Args& a)
 {
     const fs::path testsFile = a.need("tests"), out = a.need("out");
@@ -388,11 +434,7 @@ int predict(const Args& a)
             }
             return v;
         };
-        o.collection = a.get("collection", "sherritt");
-        if (o.collection != "sherritt" && o.collection != "landed")
-        {
-            throw drum::InputError("", "-collection", "'" + o.collection + "': valid names are sherritt, landed");
-        }
+        o.collection = collection(a, model);
         o.turbulence = named("turbulence", {"kEpsilon", "realizableKE", "kOmegaSST"});
         o.particleTurbulence = named("particleTurbulence", {"none", "Simonin", "SimoninCrowe"});
         o.turbulentDispersion = named("turbulentDispersion", {"none", "gradientDiffusion"});
@@ -433,6 +475,7 @@ int predict(const Args& a)
     {
         drum::DriftSettings s;
         s.model = model;
+        s.tunnelReading = collection(a, model) == "sherritt" && model == "table";
         if (a.has("constants")) s.constants = a.get("constants");
         s.outside = drum::parseOutOfRangePolicy(a.get("outside", "refuse"), "-outside");
         // -table FILE[,FILE...]: which table serves which material
@@ -571,6 +614,7 @@ int main(int argc, char** argv)
             return argc == 1 ? 1 : 0;
         }
         if (a.has("sizeClasses")) return sizeClasses(a);
+        if (a.has("tunnelReading")) return tunnelReading(a);
         if (a.has("fit")) return fit(a);
         if (a.has("score")) return score(a);
         return predict(a);

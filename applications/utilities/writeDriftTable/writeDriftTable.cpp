@@ -3,7 +3,8 @@
 // buildDriftTable collects its cases into SWEEP.json and calls this:
 //   {"header": [["generator", "..."], ["dictionary", "..."], ...],
 //    "rows": [["<case>", V_g, spill, fall height, flight length, density,
-//              diameter, vc_over_vg, drift_m, captured_fraction], ...]}
+//              diameter, vc_over_vg, drift_m, captured_fraction
+//              [, tunnel_drift_m]], ...]}   (the last value in every row or in none)
 // (JSON, read with yaml-cpp). The table is checked as the reader checks it
 // (header order, ranges, complete grid) before anything is written; the
 // output is replaced atomically. Exit 1 with the file and the defect.
@@ -48,9 +49,10 @@ drum::DriftTableFile readSweep(const std::string& file)
     {
         const std::string at = "rows[" + std::to_string(i) + "]";
         const YAML::Node r = rows[i];
-        if (!r.IsSequence() || r.size() != 10 || !r[0].IsScalar())
+        if (!r.IsSequence() || (r.size() != 10 && r.size() != 11) || !r[0].IsScalar())
         {
-            throw drum::InputError(drum::fileLine(file, r), at, "must be [case, 6 axis values, 3 values]");
+            throw drum::InputError(drum::fileLine(file, r), at, "must be [case, 6 axis values, 3 values"
+                                   " [, tunnel_drift_m]]");
         }
         drum::DriftTableRecord rec;
         rec.caseName = r[0].Scalar();
@@ -62,6 +64,7 @@ drum::DriftTableFile readSweep(const std::string& file)
         {
             rec.v[v] = drum::yamlNumber(r[7 + v], at + "." + drum::driftTableColumns()[7 + v], file);
         }
+        if (r.size() == 11) rec.tunnelDrift = drum::yamlNumber(r[10], at + "." + drum::tunnelDriftColumn(), file);
         t.rows.push_back(rec);
     }
     return t;

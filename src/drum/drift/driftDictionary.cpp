@@ -199,7 +199,11 @@ std::shared_ptr<const DriftModel> makeDriftModel
         const auto file = s.table.empty() ? defaultDriftTableFile() : s.table;
         auto table = std::make_shared<const DriftTable>(DriftTable::read(file, o));
         requireTableGas(*table, gas);
-        if (s.model == "table") return std::make_shared<TableDrift>(table);
+        if (s.model == "table")
+        {
+            return std::make_shared<TableDrift>(table, s.tunnelReading ? TableDrift::Reading::tunnel
+                                                                       : TableDrift::Reading::crossed);
+        }
         return std::make_shared<TableVcDrift>(table, gas, law);
     }
     if (s.model == "segmentVc")

@@ -51,6 +51,9 @@ struct DriftSettings
     std::string autoInside = "tableVc";
     std::string autoOutside = "sherritt";
     AutoDriftOptions autoOptions;
+    //- model table: answer the table's tunnel_drift_m (what Sherritt's wind
+    //  tunnel would have recorded; windTunnelDrift's scoring) instead of drift_m
+    bool tunnelReading = false;
 };
 
 //- InputError naming the table when its sweep gas differs from `gas` by more

@@ -211,7 +211,8 @@ DriftTable DriftTable::fromFile(const DriftTableFile& f, const std::filesystem::
         n *= t.axes_[a].size();
     }
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    t.values_.assign(3*n, nan);
+    t.values_.assign(valueCount*n, nan);
+    t.hasTunnelDrift_ = raw.front().tunnelDrift.has_value();
     std::vector<int> seenAt(n, 0);
     for (const auto& r : raw)
     {
@@ -229,7 +230,13 @@ DriftTable DriftTable::fromFile(const DriftTableFile& f, const std::filesystem::
                 + where(raw[seenAt[idx] - 1], seenAt[idx] - 1) + "): each combination of the axes must appear once");
         }
         seenAt[idx] = int(&r - raw.data()) + 1;
-        for (int v = 0; v < 3; ++v) t.values_[3*idx + v] = r.v[v];
+        if (r.tunnelDrift.has_value() != t.hasTunnelDrift_)
+        {
+            throw InputError(file, where(r, std::size_t(&r - raw.data())), "a value of " + tunnelDriftColumn()
+                + " in some rows only: every row has one or none has");
+        }
+        for (int v = 0; v < 3; ++v) t.values_[valueCount*idx + v] = r.v[v];
+        if (r.tunnelDrift) t.values_[valueCount*idx + 3] = *r.tunnelDrift;
     }
     if (raw.size() != n)
     {
@@ -362,6 +369,18 @@ double DriftTable::vcOverVg(const DriftQuery& q) const
 }
 
 
+double DriftTable::tunnelDrift(const DriftQuery& q) const
+{
+    if (!hasTunnelDrift_)
+    {
+        throw InputError(file_.string(), tunnelDriftColumn(), "the table has no such column (a sweep outside "
+            "the wind tunnel's domain, or written before the column existed: buildDriftTable writes it again "
+            "from its finished cases)");
+    }
+    return evaluate(q, true).tunnelDrift;
+}
+
+
 void DriftTable::missingPoint(std::size_t idx) const
 {
     std::ostringstream os;
@@ -403,15 +422,17 @@ DriftTableValue DriftTable::evaluate(const DriftQuery& q, bool anchor) const
         const double w = c.w[k];
         if (w == 0) continue;
         const std::size_t idx = base + c.off[k];
-        const double* val = &values_[3*idx];
+        const double* val = &values_[valueCount*idx];
         if (std::isnan(val[0])) missingPoint(idx);
         v.vcOverVg += w*val[0];
         v.drift += w*val[1];
         v.capturedFraction += w*val[2];
+        v.tunnelDrift += w*val[3];
     }
     if (anchored)
     {
         v.drift *= q.fallHeight/y0;   // exact anchor: no drift without a fall
+        v.tunnelDrift *= q.fallHeight/y0;
     }
     return v;
 }
@@ -422,13 +443,14 @@ std::vector<DriftTable::Row> DriftTable::rows() const
     std::vector<Row> out;
     for (std::size_t idx = 0; idx < size(); ++idx)
     {
-        if (std::isnan(values_[3*idx])) continue;
+        if (std::isnan(values_[valueCount*idx])) continue;
         Row r;
         for (int a = 0; a < driftAxisCount; ++a)
         {
             r.x[a] = axes_[a][(idx/stride_[a]) % axes_[a].size()];
         }
-        r.v = {values_[3*idx], values_[3*idx + 1], values_[3*idx + 2]};
+        const double* val = &values_[valueCount*idx];
+        r.v = {val[0], val[1], val[2], val[3]};
         out.push_back(r);
     }
     return out;

@@ -13,10 +13,12 @@
 // L^-0.437; drag K ~ 1/d), which are linear in ln-ln and closer to linear in
 // ln-lin than in lin-lin; gas velocity, fall height and density in x (the
 // drift grows about linearly in V_g and in y over a fall). Values
-// (vc_over_vg, drift_m, captured_fraction) are interpolated linearly.
+// (vc_over_vg, drift_m, captured_fraction and, when the table has it,
+// tunnel_drift_m) are interpolated linearly.
 //
 // Exact anchor: drift_m -> 0 as the fall height -> 0, so below the smallest
-// tabulated fall height y0 drift_m = drift(y0) y/y0 (no out-of-range event);
+// tabulated fall height y0 drift_m = drift(y0) y/y0 (no out-of-range event;
+// tunnel_drift_m alike);
 // vc_over_vg and captured_fraction follow the out-of-range policy there.
 //
 // Out of range (OutOfRangePolicy): refuse throws drum::InputError naming the
@@ -66,6 +68,7 @@ struct DriftTableValue
     double vcOverVg = 0;        //!< V_c/V_g in the curtain
     double drift = 0;           //!< mean axial displacement of the class, m
     double capturedFraction = 0;
+    double tunnelDrift = 0;     //!< the tunnel's reading of the class, m (NaN: the table has none)
 };
 
 struct DriftTableOptions
@@ -101,6 +104,12 @@ public:
     //- vc_over_vg at the query (no anchor)
     double vcOverVg(const DriftQuery& q) const;
 
+    //- Whether the table has the tunnel_drift_m column
+    bool hasTunnelDrift() const { return hasTunnelDrift_; }
+    //- tunnel_drift_m at the query, with drift_m's anchor below the smallest
+    //  fall height; InputError naming the file when the table has no such column
+    double tunnelDrift(const DriftQuery& q) const;
+
     //- Grid nodes of an axis (one node for an axis the sweep held fixed)
     const std::vector<double>& nodes(int axis) const { return axes_[axis]; }
     //- Whether x lies in [nodes.front(), nodes.back()] of `axis` within the
@@ -121,9 +130,9 @@ public:
     long clampCount(int axis) const { return counters_->count[axis].load(); }
 
     //- Number of data rows (grid points)
-    std::size_t size() const { return values_.size()/3; }
+    std::size_t size() const { return values_.size()/valueCount; }
 
-    //- Every grid point: axis values and the three tabulated values (for
+    //- Every grid point: axis values and the tabulated values (for
     //  fitting reduced models to the table)
     struct Row { std::array<double, driftAxisCount> x; DriftTableValue v; };
     std::vector<Row> rows() const;
@@ -147,7 +156,11 @@ private:
     std::array<std::vector<double>, driftAxisCount> axes_;
     std::array<std::vector<double>, driftAxisCount> coord_;  // scaled nodes
     std::array<std::size_t, driftAxisCount> stride_{};
-    std::vector<double> values_;   // (vc, drift, captured) per grid point; NaN: missing
+    static constexpr std::size_t valueCount = 4;
+    // (vc, drift, captured, tunnel drift) per grid point; NaN: missing (the
+    // tunnel drift NaN throughout when the table has no such column)
+    std::vector<double> values_;
+    bool hasTunnelDrift_ = false;
     std::shared_ptr<Counters> counters_ = std::make_shared<Counters>();
 };
 

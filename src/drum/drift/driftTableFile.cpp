@@ -21,6 +21,8 @@ const std::vector<std::string> columns{
     "case", "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m", "flight_length_m",
     "particle_density_kg_m3", "particle_diameter_m", "vc_over_vg", "drift_m", "captured_fraction"};
 
+const std::string tunnelColumn = "tunnel_drift_m";
+
 std::string trim(const std::string& s)
 {
     const auto b = s.find_first_not_of(" \t\r");
@@ -103,6 +105,12 @@ const std::vector<std::string>& driftTableColumns()
 }
 
 
+const std::string& tunnelDriftColumn()
+{
+    return tunnelColumn;
+}
+
+
 DriftTableFile readDriftTableFile(const std::filesystem::path& path)
 {
     const std::string file = path.string();
@@ -166,6 +174,7 @@ DriftTableFile readDriftTableFile(const std::filesystem::path& path)
     {
         throw InputError(file, line(int(k) + 1), "truncated: no column header row after the comment header");
     }
+    bool tunnel = false;
     {
         const auto cols = split(trim(lines[k]), ',');
         for (std::size_t c = 0; c < columns.size(); ++c)
@@ -176,12 +185,16 @@ DriftTableFile readDriftTableFile(const std::filesystem::path& path)
                     + columns[c] + "'" + (c < cols.size() ? ", found '" + cols[c] + "'" : ", missing"));
             }
         }
-        if (cols.size() != columns.size())
+        tunnel = cols.size() == columns.size() + 1 && cols.back() == tunnelColumn;
+        if (cols.size() != columns.size() && !tunnel)
         {
-            throw InputError(file, line(int(k) + 1), "extra column '" + cols[columns.size()] + "'");
+            const std::size_t extra = columns.size() + (cols[columns.size()] == tunnelColumn ? 1 : 0);
+            throw InputError(file, line(int(k) + 1), "extra column '" + cols[extra] + "' (the one "
+                "optional last column is '" + tunnelColumn + "')");
         }
     }
     ++k;
+    const std::size_t width = columns.size() + (tunnel ? 1 : 0);
 
     // Data rows
     for (; k < lines.size(); ++k)
@@ -193,10 +206,10 @@ DriftTableFile readDriftTableFile(const std::filesystem::path& path)
             throw InputError(file, line(ln), "empty line inside the data rows");
         }
         const auto f = split(l, ',');
-        if (f.size() != columns.size())
+        if (f.size() != width)
         {
             throw InputError(file, line(ln), std::to_string(f.size()) + " fields, expected "
-                + std::to_string(columns.size()) + (f.size() < columns.size() ? " (truncated file?)" : ""));
+                + std::to_string(width) + (f.size() < width ? " (truncated file?)" : ""));
         }
         if (f[0].empty())
         {
@@ -213,6 +226,7 @@ DriftTableFile readDriftTableFile(const std::filesystem::path& path)
         {
             r.v[v] = number(f[7 + v], file, line(ln) + ", column " + columns[7 + v]);
         }
+        if (tunnel) r.tunnelDrift = number(f[10], file, line(ln) + ", column " + tunnelColumn);
         t.rows.push_back(r);
     }
     if (!endsWithNewline)
@@ -235,17 +249,19 @@ std::string driftTableText(const DriftTableFile& table)
     {
         s += "# " + kv.first + ": " + kv.second + "\n";
     }
+    const bool tunnel = !table.rows.empty() && table.rows.front().tunnelDrift.has_value();
     for (std::size_t c = 0; c < columns.size(); ++c)
     {
         s += (c ? "," : "") + columns[c];
     }
-    s += "\n";
+    s += (tunnel ? "," + tunnelColumn : std::string()) + "\n";
     for (const auto& r : table.rows)
     {
         s += r.caseName;
         for (int a = 0; a < 5; ++a) s += "," + printed("%.6g", r.x[a]);
         s += "," + printed("%.8g", r.x[5]);
         for (int v = 0; v < 3; ++v) s += "," + printed("%.8g", r.v[v]);
+        if (tunnel) s += "," + printed("%.8g", *r.tunnelDrift);
         s += "\n";
     }
     return s;

@@ -15,10 +15,15 @@
 //                                               grid points be missing)
 //   case,gas_velocity_m_s,spill_rate_kg_m_s,fall_height_m,flight_length_m,
 //        particle_density_kg_m3,particle_diameter_m,vc_over_vg,drift_m,captured_fraction
+//        [,tunnel_drift_m]
 //   <one row per grid point: the curtain case's name, the six axis values,
-//    the three values>                        every line ends with a newline
+//    the three values [and the tunnel's reading]>   every line ends with a newline
+// tunnel_drift_m, optional (all rows or none): the class's advance as
+// Sherritt's wind tunnel would have recorded it (its collection rule on the
+// case's landing distribution, Sherritt 1991 section 4.3.1); written for
+// sweeps in the wind tunnel's own domain.
 // Numbers: the first five axes with 6 significant digits, the diameter and
-// the three values with 8 (printf %.6g / %.8g). The axes are the
+// the values with 8 (printf %.6g / %.8g). The axes are the
 // DriftAxis order of driftTable.hpp; an axis not on the axes line is the
 // value the sweep held fixed. Key names and what each value means:
 // etc/defaults/driftTables/README.md.
@@ -49,14 +54,17 @@ std::optional<std::string> fixedSetting(const std::map<std::string, std::string>
                                         const std::string& key);
 }
 
-//- The data columns, in order
+//- The data columns, in order (without the optional last one)
 const std::vector<std::string>& driftTableColumns();
+//- The optional last column's name, "tunnel_drift_m"
+const std::string& tunnelDriftColumn();
 
 struct DriftTableRecord
 {
     std::string caseName;
     std::array<double, 6> x{};      //!< gas velocity, spill, fall height, flight length, density, diameter
     std::array<double, 3> v{};      //!< vc_over_vg, drift_m, captured_fraction
+    std::optional<double> tunnelDrift;  //!< tunnel_drift_m, when the table has the column
     int line = 0;                   //!< line in the file read (0: not read from a file)
 };
 

@@ -7,11 +7,18 @@
 namespace drum
 {
 
-TableDrift::TableDrift(std::shared_ptr<const DriftTable> table)
+TableDrift::TableDrift(std::shared_ptr<const DriftTable> table, Reading reading)
 :
-    table_(std::move(table))
+    table_(std::move(table)),
+    reading_(reading)
 {
     if (!table_) throw InputError("", "drift.table", "the table drift model needs a table");
+    if (reading_ == Reading::tunnel && !table_->hasTunnelDrift())
+    {
+        throw InputError(table_->file().string(), tunnelDriftColumn(), "the tunnel's reading needs this column, "
+            "which the table has not (buildDriftTable writes it for sweeps in the wind tunnel's domain, from "
+            "their finished cases)");
+    }
 }
 
 
@@ -30,7 +37,7 @@ double TableDrift::displacement(const DriftQuery& q) const
     {
         return slide;
     }
-    return table_->drift(q) + slide;
+    return (reading_ == Reading::tunnel ? table_->tunnelDrift(q) : table_->drift(q)) + slide;
 }
 
 

@@ -436,3 +436,86 @@ TEST(DriftTableFile, WriteReadRoundTripAndRefusals)
     EXPECT_THROW(writeDriftTableFile(comma, bad), InputError);
     EXPECT_FALSE(fs::exists(bad));
 }
+
+
+TEST(DriftTable, TheTunnelReadingColumnIsInterpolatedAnchoredAndOptional)
+{
+    // tunnel_drift_m: another multilinear function, exact on and between nodes,
+    // anchored like drift_m below the smallest fall height
+    const auto withTunnel = [](const synthetic::Point& p)
+    {
+        synthetic::Values v = multilinear(p);
+        v.tunnel = 0.5 + 0.3*p[0]*p[2] - 0.02*std::log(p[5]);
+        return v;
+    };
+    const fs::path f = tmpDir()/"tunnel.csv";
+    synthetic::write(f, synthetic::table(synthetic::defaultGrid(), withTunnel));
+    const DriftTable t = DriftTable::read(f);
+    ASSERT_TRUE(t.hasTunnelDrift());
+    for (const synthetic::Point& p : {synthetic::Point{1.5, 2, 1, 1, 1200, 1e-4}, synthetic::Point{2.2, 5, 3, 1.4, 2000, 3e-4},
+                                      synthetic::Point{6, 30, 10, 2, 2650, 2e-3}})
+    {
+        EXPECT_NEAR(t.tunnelDrift(query(p)), *withTunnel(p).tunnel, 1e-12) << p[0] << " " << p[2];
+        EXPECT_NEAR(t.drift(query(p)), withTunnel(p).drift, 1e-12);   // the other columns unchanged
+    }
+    synthetic::Point low{3, 8, 1, 1, 1200, 5e-4};
+    const double atY0 = t.tunnelDrift(query(low));
+    low[2] = 0.25;
+    EXPECT_DOUBLE_EQ(t.tunnelDrift(query(low)), 0.25*atY0);
+
+    // written back with the column, byte for byte
+    const fs::path again = tmpDir()/"tunnelAgain.csv";
+    fs::remove(again);
+    writeDriftTableFile(readDriftTableFile(f), again);
+    const DriftTableFile back = readDriftTableFile(again);
+    ASSERT_TRUE(back.rows.front().tunnelDrift.has_value());
+    std::ifstream a(again, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(a)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("captured_fraction,tunnel_drift_m\n"), std::string::npos);
+    const fs::path third = tmpDir()/"tunnelThird.csv";
+    writeDriftTableFile(back, third);
+    std::ifstream b(third, std::ios::binary);
+    EXPECT_EQ(text, std::string((std::istreambuf_iterator<char>(b)), std::istreambuf_iterator<char>()));
+
+    // a value in some rows only: refused, nothing written
+    DriftTableFile partial = back;
+    partial.rows[3].tunnelDrift.reset();
+    const fs::path bad = tmpDir()/"tunnelPartial.csv";
+    fs::remove(bad);
+    try
+    {
+        writeDriftTableFile(partial, bad);
+        ADD_FAILURE() << "a tunnel column with a hole written";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("tunnel_drift_m in some rows only"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(bad));
+
+    // a table without the column: no tunnel reading, named
+    const fs::path plain = tmpDir()/"plain.csv";
+    synthetic::write(plain, synthetic::table(synthetic::defaultGrid(), multilinear));
+    const DriftTable p = DriftTable::read(plain);
+    EXPECT_FALSE(p.hasTunnelDrift());
+    try
+    {
+        p.tunnelDrift(query(synthetic::Point{3, 8, 4, 1, 1200, 5e-4}));
+        ADD_FAILURE() << "tunnel reading of a table without the column";
+    }
+    catch (const InputError& e)
+    {
+        EXPECT_EQ(e.file(), plain.string());
+        EXPECT_NE(std::string(e.what()).find("tunnel_drift_m"), std::string::npos) << e.what();
+    }
+
+    // another last column, a row with a field too few: refused, naming the line
+    std::string s = synthetic::table(synthetic::defaultGrid(), withTunnel);
+    const fs::path renamed = tmpDir()/"renamed.csv";
+    synthetic::write(renamed, std::string(s).replace(s.find("tunnel_drift_m"), 14, "hopper_drift_m"));
+    expectError(renamed, "extra column 'hopper_drift_m'");
+    const fs::path shortRow = tmpDir()/"shortRow.csv";
+    const auto lastComma = s.rfind(',');
+    synthetic::write(shortRow, s.substr(0, lastComma) + "\n");
+    expectError(shortRow, "10 fields, expected 11");
+}

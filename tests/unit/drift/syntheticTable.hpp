@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,7 +18,9 @@ namespace synthetic
 {
 
 using Point = std::array<double, 6>;   // V_g, S, y, L, rho_p, d
-struct Values { double vc, drift, captured; };
+//- The values of a grid point; tunnel: the optional tunnel_drift_m column
+//  (written when the first point has it)
+struct Values { double vc, drift, captured; std::optional<double> tunnel = std::nullopt; };
 
 const std::array<std::string, 6> names{{"gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m",
     "flight_length_m", "particle_density_kg_m3", "particle_diameter_m"}};
@@ -46,10 +49,10 @@ inline std::string header(const std::array<std::vector<double>, 6>& grid)
     return os.str();
 }
 
-inline std::string columns()
+inline std::string columns(bool tunnel = false)
 {
-    return "case,gas_velocity_m_s,spill_rate_kg_m_s,fall_height_m,flight_length_m,particle_density_kg_m3,"
-           "particle_diameter_m,vc_over_vg,drift_m,captured_fraction\n";
+    return std::string("case,gas_velocity_m_s,spill_rate_kg_m_s,fall_height_m,flight_length_m,particle_density_kg_m3,"
+           "particle_diameter_m,vc_over_vg,drift_m,captured_fraction") + (tunnel ? ",tunnel_drift_m\n" : "\n");
 }
 
 //- Rows of the full grid, in nested order (last axis fastest)
@@ -68,7 +71,9 @@ inline std::vector<std::string> rows(const std::array<std::vector<double>, 6>& g
         os.precision(17);
         os << "c" << n++;
         for (double x : p) os << ',' << x;
-        os << ',' << v.vc << ',' << v.drift << ',' << v.captured << "\n";
+        os << ',' << v.vc << ',' << v.drift << ',' << v.captured;
+        if (v.tunnel) os << ',' << *v.tunnel;
+        os << "\n";
         out.push_back(os.str());
         int a = 5;
         while (a >= 0 && ++i[a] == grid[a].size()) { i[a] = 0; --a; }
@@ -79,7 +84,9 @@ inline std::vector<std::string> rows(const std::array<std::vector<double>, 6>& g
 
 inline std::string table(const std::array<std::vector<double>, 6>& grid, const std::function<Values(const Point&)>& f)
 {
-    std::string s = header(grid) + columns();
+    Point first;
+    for (int a = 0; a < 6; ++a) first[a] = grid[a].front();
+    std::string s = header(grid) + columns(f(first).tunnel.has_value());
     for (const auto& r : rows(grid, f)) s += r;
     return s;
 }

@@ -8,6 +8,76 @@
 namespace drum
 {
 
+namespace
+{
+
+//- One class's parts of its own feed: on the suspended platform (and their
+//  moment about the tunnel's start), on the fixed platform, lost
+struct ClassShares
+{
+    double suspended = 0, suspendedMoment = 0, fixed = 0, lost = 0;
+};
+
+//- A bin's net crossing of a plane inside the fall can be slightly negative
+//  (fines carried back up across it by the gas); down to this share of the
+//  class's flux it counts as it is, net, a larger one is refused
+constexpr double maxNetUpflow = 1e-3;
+
+ClassShares classShares
+(
+    const ClassLanding& landing,
+    const TunnelFloor& floor,
+    const std::string& source,
+    std::size_t i
+)
+{
+    ClassShares s;
+    const double tol = 1e-9*std::max(1.0, floor.suspendedEnd);
+    for (const auto& b : landing.bins)
+    {
+        if (!(b.fraction >= -maxNetUpflow && b.fraction <= 1.01))
+        {
+            std::ostringstream os;
+            os << "class " << i << ": fraction " << b.fraction << " in the bin " << b.xLow << "-"
+               << b.xHigh << " m outside [" << -maxNetUpflow << ", 1]";
+            throw InputError(source, "fraction_of_inflow", os.str());
+        }
+        if (b.xLow < floor.suspendedEnd - tol && b.xHigh > floor.suspendedEnd + tol)
+        {
+            std::ostringstream os;
+            os << "the bin " << b.xLow << "-" << b.xHigh << " m straddles the suspended platform's end at "
+               << floor.suspendedEnd << " m: bins must have an edge there";
+            throw InputError(source, "x_low_m", os.str());
+        }
+        if (b.fraction == 0) continue;
+        if (b.xHigh <= floor.suspendedEnd + tol)
+        {
+            s.suspended += b.fraction;              // weighed by the load cells: exact centre
+            s.suspendedMoment += b.fraction*b.xCentre;
+        }
+        else
+        {
+            s.fixed += b.fraction;                  // swept up: the platform's centre
+        }
+    }
+    if (s.suspended + s.fixed > 1.01)
+    {
+        std::ostringstream os;
+        os << "class " << i << ": " << s.suspended + s.fixed << " of its feed caught (more than all of it)";
+        throw InputError(source, "fraction_of_inflow", os.str());
+    }
+    s.lost = std::max(0.0, 1 - s.suspended - s.fixed);   // the feed's mass balance
+    return s;
+}
+
+double moment(const ClassShares& s, const TunnelFloor& floor)
+{
+    return s.suspendedMoment + s.fixed*floor.fixedCentre() + s.lost*floor.fixedEnd;
+}
+
+} // namespace
+
+
 CollectedAdvance collectedAdvance
 (
     const std::vector<ClassLanding>& classes,
@@ -21,54 +91,37 @@ CollectedAdvance collectedAdvance
         throw InputError(source, "classes", "one mass fraction per landing class needed");
     }
     CollectedAdvance out;
-    double moment = 0, release = 0, total = 0;
-    const double tol = 1e-9*std::max(1.0, floor.suspendedEnd);
+    double m = 0, release = 0, total = 0;
     for (std::size_t i = 0; i < classes.size(); ++i)
     {
         const double w = massFractions[i];
-        double susp = 0, suspX = 0, fixed = 0;
-        for (const auto& b : classes[i].bins)
-        {
-            if (!(b.fraction >= -1e-9 && b.fraction <= 1.01))
-            {
-                std::ostringstream os;
-                os << "class " << i << ": fraction " << b.fraction << " in the bin " << b.xLow << "-"
-                   << b.xHigh << " m outside [0, 1]";
-                throw InputError(source, "fraction_of_inflow", os.str());
-            }
-            if (b.xLow < floor.suspendedEnd - tol && b.xHigh > floor.suspendedEnd + tol)
-            {
-                std::ostringstream os;
-                os << "the bin " << b.xLow << "-" << b.xHigh << " m straddles the suspended platform's end at "
-                   << floor.suspendedEnd << " m: bins must have an edge there";
-                throw InputError(source, "x_low_m", os.str());
-            }
-            if (b.fraction <= 0) continue;
-            if (b.xHigh <= floor.suspendedEnd + tol)
-            {
-                susp += b.fraction;              // weighed by the load cells: exact centre
-                suspX += b.fraction*b.xCentre;
-            }
-            else
-            {
-                fixed += b.fraction;             // swept up: the platform's centre
-            }
-        }
-        if (susp + fixed > 1.01)
-        {
-            std::ostringstream os;
-            os << "class " << i << ": " << susp + fixed << " of its feed caught (more than all of it)";
-            throw InputError(source, "fraction_of_inflow", os.str());
-        }
-        const double lost = std::max(0.0, 1 - susp - fixed);   // the feed's mass balance
-        out.suspended += w*susp;
-        out.fixed += w*fixed;
-        out.lost += w*lost;
-        moment += w*(suspX + fixed*floor.fixedCentre() + lost*floor.fixedEnd);
-        total += w*(susp + fixed + lost);
+        const ClassShares s = classShares(classes[i], floor, source, i);
+        out.suspended += w*s.suspended;
+        out.fixed += w*s.fixed;
+        out.lost += w*s.lost;
+        m += w*moment(s, floor);
+        total += w*(s.suspended + s.fixed + s.lost);
         release += w*classes[i].releaseCentre;
     }
-    out.advance = moment/total - release;
+    out.advance = m/total - release;
+    return out;
+}
+
+
+CollectedAdvance classCollectedAdvance
+(
+    const ClassLanding& landing,
+    const TunnelFloor& floor,
+    const std::string& source,
+    std::size_t index
+)
+{
+    const ClassShares s = classShares(landing, floor, source, index);
+    CollectedAdvance out;
+    out.suspended = s.suspended;
+    out.fixed = s.fixed;
+    out.lost = s.lost;
+    out.advance = moment(s, floor)/(s.suspended + s.fixed + s.lost) - landing.releaseCentre;
     return out;
 }
 

@@ -45,15 +45,30 @@ struct CollectedAdvance
 };
 
 //- The collection rule over classes weighted by their feed mass fractions
-//  (summing to 1). A bin straddling the suspended platform's end, a fraction
-//  outside [0, 1.01] or caught parts above the feed are InputErrors naming
-//  `source`.
+//  (summing to 1). A bin's fraction is its net crossing: at a plane inside
+//  the fall it may be slightly negative (fines carried back up), and counts
+//  as it is down to -1e-3. A bin straddling the suspended platform's end, a
+//  fraction outside [-1e-3, 1.01] or caught parts above the feed are
+//  InputErrors naming `source`.
 CollectedAdvance collectedAdvance
 (
     const std::vector<ClassLanding>& classes,
     const std::vector<double>& massFractions,
     const TunnelFloor& floor,
     const std::string& source
+);
+
+//- The rule for one class alone: what the tunnel would record had only this
+//  class been fed (its shares of its own feed, and its advance). The bulk
+//  advance of collectedAdvance is the feed-weighted sum of these within the
+//  caught parts' overshoot of 1 (below 1e-2). `index` names the class in
+//  errors.
+CollectedAdvance classCollectedAdvance
+(
+    const ClassLanding& landing,
+    const TunnelFloor& floor,
+    const std::string& source,
+    std::size_t index = 0
 );
 
 } // namespace drum
