@@ -8,6 +8,8 @@
 //                [-turbulentDispersion none|gradientDiffusion] [-particleParticleDrag none|Syamlal]
 //                [-releaseVelocity V]
 //                                     (cfd: curtainCase's options)
+//                [-collection sherritt|landed]  (cfd, table: the tunnel's reading, default,
+//                                 or the mean drift of what crossed the fall height)
 //                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
 //                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
@@ -15,6 +17,9 @@
 //                                 the range under refuse - is reported and left out)
 //       writes test,mean_advance_m for every row of FILE.csv (columns of
 //       data/windtunnel_tests.csv; the measured advance is never read)
+//   windTunnelDrift -tunnelReading LANDING.csv -out READING.csv
+//       the tunnel's reading of each class of one curtainCase run, at every
+//       fall height (buildDriftTable's tunnel_drift_m)
 //   windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table(s)
 //   windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
