@@ -369,14 +369,20 @@ double DriftTable::vcOverVg(const DriftQuery& q) const
 }
 
 
-double DriftTable::tunnelDrift(const DriftQuery& q) const
+void DriftTable::requireTunnelDrift() const
 {
     if (!hasTunnelDrift_)
     {
-        throw InputError(file_.string(), tunnelDriftColumn(), "the table has no such column (a sweep outside "
-            "the wind tunnel's domain, or written before the column existed: buildDriftTable writes it again "
-            "from its finished cases)");
+        throw InputError(file_.string(), tunnelDriftColumn(), "the tunnel's reading needs this column, which "
+            "the table has not (a sweep outside the wind tunnel's domain, or written before the column "
+            "existed: buildDriftTable writes it again from its finished cases)");
     }
+}
+
+
+double DriftTable::tunnelDrift(const DriftQuery& q) const
+{
+    requireTunnelDrift();
     return evaluate(q, true).tunnelDrift;
 }
 

@@ -106,6 +106,8 @@ public:
 
     //- Whether the table has the tunnel_drift_m column
     bool hasTunnelDrift() const { return hasTunnelDrift_; }
+    //- InputError naming the file and the column when the table has none
+    void requireTunnelDrift() const;
     //- tunnel_drift_m at the query, with drift_m's anchor below the smallest
     //  fall height; InputError naming the file when the table has no such column
     double tunnelDrift(const DriftQuery& q) const;

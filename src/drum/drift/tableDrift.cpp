@@ -13,12 +13,7 @@ TableDrift::TableDrift(std::shared_ptr<const DriftTable> table, Reading reading)
     reading_(reading)
 {
     if (!table_) throw InputError("", "drift.table", "the table drift model needs a table");
-    if (reading_ == Reading::tunnel && !table_->hasTunnelDrift())
-    {
-        throw InputError(table_->file().string(), tunnelDriftColumn(), "the tunnel's reading needs this column, "
-            "which the table has not (buildDriftTable writes it for sweeps in the wind tunnel's domain, from "
-            "their finished cases)");
-    }
+    if (reading_ == Reading::tunnel) table_->requireTunnelDrift();   // refused before any query
 }
 
 

@@ -29,8 +29,8 @@ std::map<double, std::vector<ClassLanding>> readLandingFile(const std::filesyste
 {
     const std::string f = file.string();
     if (!std::filesystem::exists(file)) throw InputError(f, "", "curtainCase wrote no landing distribution");
-    std::map<double, std::map<std::size_t, ClassLanding>> byHeight;
-    std::map<double, std::map<std::size_t, bool>> released;
+    // per height and class index: the landing, and whether its slot row was read
+    std::map<double, std::map<std::size_t, std::pair<ClassLanding, bool>>> byHeight;
     try
     {
         io::CSVReader<7, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(f);
@@ -52,15 +52,14 @@ std::map<double, std::vector<ClassLanding>> readLandingFile(const std::filesyste
             {
                 throw InputError(f, where, "fall_height_m must be a number and class c<index>");
             }
-            ClassLanding& c = byHeight[y][i];
-            released[y][i];
+            auto& [c, released] = byHeight[y][i];
             if (lo == "lost") continue;        // the rule counts the loss by the feed's balance
             try
             {
                 if (lo == "slot")
                 {
                     c.releaseCentre = fieldNumber(xc);
-                    released[y][i] = true;
+                    released = true;
                     continue;
                 }
                 ClassLanding::Bin b;
@@ -89,9 +88,10 @@ std::map<double, std::vector<ClassLanding>> readLandingFile(const std::filesyste
     for (auto& [y, classes] : byHeight)
     {
         std::vector<ClassLanding> v;
-        for (auto& [i, c] : classes)
+        for (auto& [i, entry] : classes)
         {
-            if (i != v.size() || !released[y][i] || c.bins.empty())
+            auto& [c, released] = entry;
+            if (i != v.size() || !released || c.bins.empty())
             {
                 std::ostringstream os;
                 os << "no slot row or no bins of class c" << v.size() << " at fall height " << y << " m";
