@@ -143,14 +143,14 @@ TEST(WindTunnelDriftCli, TunnelReadingAppliesTheCollectionRuleToEachClassAtEvery
 {
     // two heights, two classes released at 1.5 m: at 4 m class c0 half on the suspended
     // platform at 2.1 m and half on the fixed one, class c1 all at 3.0 m, less a net
-    // 5e-5 crossing back up at 0.6 m (counted net; the feed's balance puts it at 11.3 m),
+    // 0.01 crossing back up at 0.6 m (counted net; the feed's balance puts it at 11.3 m),
     // plus a denormal flux beyond 7.5 m, as OpenFOAM prints one; at 10.3 m c0 0.4 at 6 m and 0.2 on the
     // fixed platform (0.4 lost: the feed's balance, whatever the outlet row says), c1 all lost
     const fs::path landing = dir()/"curtainLanding.csv", reading = dir()/"reading.csv";
     std::ofstream(landing) <<
         "fall_height_m,class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m\n"
         "4,c0,slot,slot,1,1,1.5\n4,c0,2,2.25,0.5,0.5,2.1\n4,c0,8,8.25,0.5,0.5,8.1\n4,c0,lost,lost,0,0,nan\n"
-        "4,c1,slot,slot,1,1,1.5\n4,c1,0.5,0.75,-5e-5,-5e-5,0.6\n4,c1,2.75,3,1,1,3.0\n"
+        "4,c1,slot,slot,1,1,1.5\n4,c1,0.5,0.75,-0.01,-0.01,0.6\n4,c1,2.75,3,1,1,3.0\n"
         "4,c1,9,9.25,1.3e-320,1.5e-320,nan\n"
         "10.3,c0,slot,slot,1,1,1.5\n10.3,c0,5.75,6,0.4,0.4,6\n10.3,c0,10,10.25,0.2,0.2,10.1\n"
         "10.3,c0,lost,lost,0.3,0.3,nan\n"
@@ -175,16 +175,22 @@ TEST(WindTunnelDriftCli, TunnelReadingAppliesTheCollectionRuleToEachClassAtEvery
         EXPECT_NEAR(g[3], lo, 1e-15) << y << " c" << c;
     };
     expect(4, 0, 0.5*2.1 + 0.5*9.4 - 1.5, 0.5, 0.5, 0);
-    expect(4, 1, 3.0 - 5e-5*0.6 + 5e-5*11.3 - 1.5, 1 - 5e-5, 0, 5e-5);
+    expect(4, 1, 3.0 - 0.01*0.6 + 0.01*11.3 - 1.5, 1 - 0.01, 0, 0.01);
     expect(10.3, 0, 0.4*6 + 0.2*9.4 + 0.4*11.3 - 1.5, 0.4, 0.2, 0.4);
     expect(10.3, 1, 11.3 - 1.5, 0, 0, 1);
-    // a larger net upflow, a bin across the suspended platform's end, a malformed number:
+    // a bin carrying more than the feed back up, a class whose net crossing is an upflow
+    // (the signs flipped), a bin across the suspended platform's end, a malformed number:
     // refused naming the file
     std::ofstream(landing) << "fall_height_m,class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m\n"
-                              "4,c0,slot,slot,1,1,1.5\n4,c0,1,1.25,-0.01,-0.01,1.1\n4,c0,2,2.25,1,1,2.1\n";
+                              "4,c0,slot,slot,1,1,1.5\n4,c0,1,1.25,-1.5,-1.5,1.1\n4,c0,2,2.25,2.5,2.5,2.1\n";
     r = run("-tunnelReading " + landing.string() + " -out " + reading.string());
     EXPECT_NE(r.rc, 0);
-    EXPECT_NE(r.out.find("outside [-0.001, 1]"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("outside [-1, 1.01]"), std::string::npos) << r.out;
+    std::ofstream(landing) << "fall_height_m,class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m\n"
+                              "4,c0,slot,slot,1,1,1.5\n4,c0,2,2.25,-0.5,-0.5,2.1\n4,c0,8,8.25,-0.5,-0.5,8.1\n";
+    r = run("-tunnelReading " + landing.string() + " -out " + reading.string());
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("-1 of its feed caught (a net upflow"), std::string::npos) << r.out;
     std::ofstream(landing) << "fall_height_m,class,x_low_m,x_high_m,mass_flow_kg_s,fraction_of_inflow,x_centre_m\n"
                               "4,c0,slot,slot,1,1,1.5\n4,c0,7.4,7.6,1,1,7.5\n";
     r = run("-tunnelReading " + landing.string() + " -out " + reading.string());

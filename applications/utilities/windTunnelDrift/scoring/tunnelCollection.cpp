@@ -18,10 +18,15 @@ struct ClassShares
     double suspended = 0, suspendedMoment = 0, fixed = 0, lost = 0;
 };
 
-//- A bin's net crossing of a plane inside the fall can be slightly negative
-//  (fines carried back up across it by the gas); down to this share of the
-//  class's flux it counts as it is, net, a larger one is refused
-constexpr double maxNetUpflow = 1e-3;
+//- A bin's net crossing of a plane inside the fall can be negative: near the
+//  release and above a floor the gas carries fines back up across the plane
+//  (measured down to -1e-3 of the class's flux, 1.5 m above a floor). It counts
+//  as it is, net. A bin can carry neither more than the class's feed down
+//  (1 % over, the steady state's wobble) nor more than all of it back up, and
+//  the class's caught net crossing cannot be an upflow
+constexpr double maxBinShare = 1.01;
+constexpr double maxNetUpflow = 1;
+constexpr double maxCaughtUpflow = 1e-2;
 
 ClassShares classShares
 (
@@ -35,11 +40,11 @@ ClassShares classShares
     const double tol = 1e-9*std::max(1.0, floor.suspendedEnd);
     for (const auto& b : landing.bins)
     {
-        if (!(b.fraction >= -maxNetUpflow && b.fraction <= 1.01))
+        if (!(b.fraction >= -maxNetUpflow && b.fraction <= maxBinShare))
         {
             std::ostringstream os;
             os << "class " << i << ": fraction " << b.fraction << " in the bin " << b.xLow << "-"
-               << b.xHigh << " m outside [" << -maxNetUpflow << ", 1]";
+               << b.xHigh << " m outside [" << -maxNetUpflow << ", " << maxBinShare << "]";
             throw InputError(source, "fraction_of_inflow", os.str());
         }
         if (b.xLow < floor.suspendedEnd - tol && b.xHigh > floor.suspendedEnd + tol)
@@ -60,7 +65,14 @@ ClassShares classShares
             s.fixed += b.fraction;                  // swept up: the platform's centre
         }
     }
-    if (s.suspended + s.fixed > 1.01)
+    if (s.suspended + s.fixed < -maxCaughtUpflow)
+    {
+        std::ostringstream os;
+        os << "class " << i << ": " << s.suspended + s.fixed
+           << " of its feed caught (a net upflow through the whole plane)";
+        throw InputError(source, "fraction_of_inflow", os.str());
+    }
+    if (s.suspended + s.fixed > maxBinShare)
     {
         std::ostringstream os;
         os << "class " << i << ": " << s.suspended + s.fixed << " of its feed caught (more than all of it)";

@@ -46,9 +46,9 @@ struct CollectedAdvance
 
 //- The collection rule over classes weighted by their feed mass fractions
 //  (summing to 1). A bin's fraction is its net crossing: at a plane inside
-//  the fall it may be slightly negative (fines carried back up), and counts
-//  as it is down to -1e-3. A bin straddling the suspended platform's end, a
-//  fraction outside [-1e-3, 1.01] or caught parts above the feed are
+//  the fall it may be negative (fines carried back up), and counts as it is.
+//  A bin straddling the suspended platform's end, a fraction outside
+//  [-1, 1.01], caught parts above the feed (1.01) or below -0.01 are
 //  InputErrors naming `source`.
 CollectedAdvance collectedAdvance
 (
