@@ -7,6 +7,7 @@
 #include "scoring/predictionScore.hpp"
 #include "scoring/windTunnelData.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -24,9 +25,16 @@ void writeScores
     const std::vector<NamedPredictions>& predictions,
     const fs::path& csv,
     const fs::path& png,
-    const fs::path& byMaterial
+    const fs::path& byMaterial,
+    const std::vector<std::string>& drawn
 )
 {
+    for (const auto& name : drawn)
+    {
+        bool known = false;
+        for (const auto& p : predictions) known = known || p.model == name;
+        if (!known) throw drum::InputError("", "-pngModels", "'" + name + "' is not one of the -predictions names");
+    }
     const auto measured = drum::readMeasuredAdvance(testsFile);
     // fall height and material per test: the scoring side may read the whole file
     std::map<int, double> height;
@@ -59,6 +67,7 @@ void writeScores
     plot.ylabel = "predicted mean advance [m]";
     plot.logx = plot.logy = true;
     plot.extra.push_back("set key top left");
+    plot.extra.push_back("set termoption noenhanced");   // model names as written (underscores)
     plot.extra.push_back("set clip two");   // draw the +-25 % lines whose ends lie on the frame
     const std::vector<std::string> points{"7", "5", "9", "11", "13", "3", "1"};
     double lo = 1e9, hi = 0;
@@ -107,7 +116,9 @@ void writeScores
             const auto sub = subset(material, m);
             if (!sub.empty()) row(om, m, drum::scorePredictions(sub, measured));
         }
-        drum::PlotSeries s{p.model, {}, {}, "points pt " + points[k % points.size()] + " ps 1.3"};
+        if (!drawn.empty() && std::find(drawn.begin(), drawn.end(), p.model) == drawn.end()) continue;
+        const std::size_t style = plot.series.size();
+        drum::PlotSeries s{p.model, {}, {}, "points pt " + points[style % points.size()] + " ps 1.3"};
         for (const auto& kv : pred)
         {
             if (!measured.count(kv.first)) continue;

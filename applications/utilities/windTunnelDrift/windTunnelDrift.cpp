@@ -23,9 +23,9 @@
 //   windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table(s)
 //   windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
-//                [-byMaterial FILE.csv]
+//                [-pngModels NAME,...] [-byMaterial FILE.csv]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
-//       (and per material)
+//       (and per material); the picture draws the -pngModels (default every model)
 //
 // Models: isolated, sherritt, table, tableVc, porousSheet, cfd (README.md).
 #include "cfdPrediction.hpp"
@@ -72,7 +72,7 @@ const char* usage =
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
-    "               [-byMaterial FILE.csv]\n"
+    "               [-pngModels NAME,...] [-byMaterial FILE.csv]\n"
     "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
     "  windTunnelDrift -tunnelReading LANDING.csv -out READING.csv\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -137,7 +137,7 @@ Args parse(int argc, char** argv)
 {
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
-        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
+        "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "pngModels", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
         "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
         "gasPressure", "tunnelReading"};
     Args a;
@@ -601,7 +601,13 @@ int score(const Args& a)
         }
         preds.push_back({item.substr(0, eq), item.substr(eq + 1)});
     }
-    windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"));
+    std::vector<std::string> drawn;
+    if (a.has("pngModels"))
+    {
+        if (!a.has("png")) throw drum::InputError("", "-pngModels", "belongs to -png (the picture it selects for)");
+        drawn = commaList(a.get("pngModels"), "-pngModels");
+    }
+    windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"), drawn);
     return 0;
 }
 

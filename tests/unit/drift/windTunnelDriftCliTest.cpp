@@ -361,6 +361,24 @@ TEST(WindTunnelDriftCli, ScoresMatchTheDataReadme)
     {
         EXPECT_NEAR(std::sqrt(ss/69), overall.at(model), 2e-3) << model;   // 4 printed digits
     }
+    // -pngModels selects the models drawn, every model is still scored; a name that is
+    // not a prediction, or the option without -png, is refused and nothing is written
+    const std::string preds = " -predictions isolated=" + (dir()/"isolated.csv").string()
+                              + ",sherritt=" + (dir()/"sherritt.csv").string();
+    const fs::path csv2 = dir()/"scores2.csv", png = dir()/"scores2.png";
+    CliRun d = run("-score -tests " + tests + preds + " -out " + csv2.string() + " -png " + png.string()
+                   + " -pngModels sherritt");
+    ASSERT_EQ(d.rc, 0) << d.out;
+    EXPECT_EQ(text(csv2), text(csv));
+    fs::remove(csv2);
+    d = run("-score -tests " + tests + preds + " -out " + csv2.string() + " -png " + png.string()
+            + " -pngModels sherritt,table");
+    EXPECT_NE(d.rc, 0);
+    EXPECT_NE(d.out.find("'table' is not one of the -predictions names"), std::string::npos) << d.out;
+    d = run("-score -tests " + tests + preds + " -out " + csv2.string() + " -pngModels sherritt");
+    EXPECT_NE(d.rc, 0);
+    EXPECT_NE(d.out.find("belongs to -png"), std::string::npos) << d.out;
+    EXPECT_FALSE(fs::exists(csv2));
 }
 
 
