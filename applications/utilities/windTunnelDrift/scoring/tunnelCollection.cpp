@@ -21,10 +21,11 @@ struct ClassShares
 //- A bin's net crossing of a plane inside the fall can be negative: near the
 //  release and above a floor the gas carries fines back up across the plane
 //  (measured down to -1e-3 of the class's flux, 1.5 m above a floor). It counts
-//  as it is, net. A bin can carry neither more than the class's feed down
-//  (1 % over, the steady state's wobble) nor more than all of it back up, and
-//  the class's caught net crossing cannot be an upflow
-constexpr double maxBinShare = 1.01;
+//  as it is, net. Neither a bin nor the class's caught parts together can carry
+//  more than the class's feed down (1 % over, the steady state's wobble); a bin
+//  cannot carry more than all of it back up, and the caught parts' net crossing
+//  cannot be an upflow
+constexpr double maxFeedShare = 1.01;
 constexpr double maxNetUpflow = 1;
 constexpr double maxCaughtUpflow = 1e-2;
 
@@ -40,11 +41,11 @@ ClassShares classShares
     const double tol = 1e-9*std::max(1.0, floor.suspendedEnd);
     for (const auto& b : landing.bins)
     {
-        if (!(b.fraction >= -maxNetUpflow && b.fraction <= maxBinShare))
+        if (!(b.fraction >= -maxNetUpflow && b.fraction <= maxFeedShare))
         {
             std::ostringstream os;
             os << "class " << i << ": fraction " << b.fraction << " in the bin " << b.xLow << "-"
-               << b.xHigh << " m outside [" << -maxNetUpflow << ", " << maxBinShare << "]";
+               << b.xHigh << " m outside [" << -maxNetUpflow << ", " << maxFeedShare << "]";
             throw InputError(source, "fraction_of_inflow", os.str());
         }
         if (b.xLow < floor.suspendedEnd - tol && b.xHigh > floor.suspendedEnd + tol)
@@ -72,7 +73,7 @@ ClassShares classShares
            << " of its feed caught (a net upflow through the whole plane)";
         throw InputError(source, "fraction_of_inflow", os.str());
     }
-    if (s.suspended + s.fixed > maxBinShare)
+    if (s.suspended + s.fixed > maxFeedShare)
     {
         std::ostringstream os;
         os << "class " << i << ": " << s.suspended + s.fixed << " of its feed caught (more than all of it)";
