@@ -19,6 +19,14 @@ namespace windTunnelDrift
 
 namespace fs = std::filesystem;
 
+ScoredQuantity scoredQuantity(const std::string& name)
+{
+    if (name == "advance") return ScoredQuantity();
+    if (name == "apparentVc") return {"vc_m_s", "apparent in-sheet gas velocity V_c (Eq 141) [m/s]", true};
+    throw drum::InputError("", "-quantity", "'" + name + "': valid names are advance, apparentVc");
+}
+
+
 void writeScores
 (
     const fs::path& testsFile,
@@ -26,7 +34,8 @@ void writeScores
     const fs::path& csv,
     const fs::path& png,
     const fs::path& byMaterial,
-    const std::vector<std::string>& drawn
+    const std::vector<std::string>& drawn,
+    const ScoredQuantity& quantity
 )
 {
     for (const auto& name : drawn)
@@ -35,7 +44,7 @@ void writeScores
         for (const auto& p : predictions) known = known || p.model == name;
         if (!known) throw drum::InputError("", "-pngModels", "'" + name + "' is not one of the -predictions names");
     }
-    const auto measured = drum::readMeasuredAdvance(testsFile);
+    const auto measured = drum::readMeasured(testsFile, quantity.column, quantity.emptyIsUnmeasured);
     // fall height and material per test: the scoring side may read the whole file
     std::map<int, double> height;
     std::map<int, std::string> material;
@@ -62,9 +71,10 @@ void writeScores
     std::ostringstream os;
     os << "model,fall_height_m,count,rms_ln,bias_ln,within25\n" << std::setprecision(4);
     drum::Plot plot;
-    plot.title = "Mean advance, predicted against measured (Sherritt 1991 wind tunnel)";
-    plot.xlabel = "measured mean advance [m]";
-    plot.ylabel = "predicted mean advance [m]";
+    plot.title = (quantity.column == "vc_m_s" ? "Apparent in-sheet gas velocity" : "Mean advance")
+        + std::string(", predicted against measured (Sherritt 1991 wind tunnel)");
+    plot.xlabel = "measured " + quantity.label;
+    plot.ylabel = "predicted " + quantity.label;
     plot.logx = plot.logy = true;
     plot.extra.push_back("set key top left");
     plot.extra.push_back("set termoption noenhanced");   // model names as written (underscores)
@@ -76,7 +86,7 @@ void writeScores
     for (std::size_t k = 0; k < predictions.size(); ++k)
     {
         const auto& p = predictions[k];
-        const auto pred = drum::readMeasuredAdvance(p.file);   // same columns: test,mean_advance_m
+        const auto pred = drum::readMeasured(p.file, quantity.column);   // test,<the quantity's column>
         if (pred.empty()) throw drum::InputError(p.file.string(), "", "no predictions");
         // one CSV row of scores
         const auto row = [&](std::ostringstream& out, const std::string& label, const drum::PredictionScore& s)

@@ -12,18 +12,21 @@
 //                                 or the mean drift of what crossed the fall height)
 //                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
 //                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
+//                [-quantity advance|apparentVc]  (the bulk mean advance, default, or
+//                                 Sherritt's apparent in-sheet gas velocity: Eq 141 on the
+//                                 model's class advances; not cfd)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
-//       writes test,mean_advance_m for every row of FILE.csv (columns of
-//       data/windtunnel_tests.csv; the measured advance is never read)
+//       writes test,mean_advance_m (or test,vc_m_s) for every row of FILE.csv
+//       (columns of data/windtunnel_tests.csv; the measured values are never read)
 //   windTunnelDrift -tunnelReading LANDING.csv -out READING.csv
 //       the tunnel's reading of each class of one curtainCase run, at every
 //       fall height (buildDriftTable's tunnel_drift_m)
 //   windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml
 //       least-squares constants of the reduced model on the CFD table(s)
 //   windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
-//                [-pngModels NAME,...] [-byMaterial FILE.csv]
+//                [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
 //       (and per material); the picture draws the -pngModels (default every model)
 //
@@ -38,6 +41,7 @@
 #include "drum/drift/tableDrift.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
+#include "scoring/apparentSheetVelocity.hpp"
 #include "scoring/landingFile.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "scoring/windTunnelPrediction.hpp"
@@ -70,9 +74,10 @@ const char* usage =
     "               [-layerThickness packed|B] [-gasPressure P]\n"
     "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
+    "               [-quantity advance|apparentVc]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
-    "               [-pngModels NAME,...] [-byMaterial FILE.csv]\n"
+    "               [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc]\n"
     "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
     "  windTunnelDrift -tunnelReading LANDING.csv -out READING.csv\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -139,7 +144,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "pngModels", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
         "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
-        "gasPressure", "tunnelReading"};
+        "gasPressure", "tunnelReading", "quantity"};
     Args a;
     for (int i = 1; i < argc; ++i)
     {
@@ -403,6 +408,14 @@ int predict(const Args& a)
         throw drum::InputError("", "-model", "segmentVc reads a drum segment's curtains by release angle; a "
                                "wind-tunnel test has one slot and no flights: use table or tableVc");
     }
+    // -quantity: the bulk advance, or the apparent in-sheet velocity of Eq 141
+    const auto quantity = windTunnelDrift::scoredQuantity(a.get("quantity", "advance"));
+    const bool apparentVc = quantity.column == "vc_m_s";
+    if (apparentVc && model == "cfd")
+    {
+        throw drum::InputError("", "-quantity", "apparentVc fits Eq 141 to each class's advance; the cfd rows "
+                               "give the bulk advance only: use -model table on a table of the same physics");
+    }
     const fs::path matFile = a.get("materials", defaultMaterials().string());
     const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
     const auto tests = drum::readWindTunnelTests(testsFile, materials);
@@ -523,7 +536,9 @@ int predict(const Args& a)
                         "none of the -table files serves this material (a table with a '# material:' header "
                         "serves that material only; give a table without one, or one for " + t.material + ")");
                 }
-                pred[t.test] = drum::predictMeanAdvance(*models.at(t.material), t, materials.at(t.material));
+                const auto& mat = materials.at(t.material);
+                pred[t.test] = apparentVc ? drum::predictApparentSheetVelocity(*models.at(t.material), t, mat, air)
+                                          : drum::predictMeanAdvance(*models.at(t.material), t, mat);
             }
             catch (const drum::InputError& e)
             {
@@ -555,7 +570,7 @@ int predict(const Args& a)
             }
         }
     }
-    drum::CsvTable table({"test", "mean_advance_m"});
+    drum::CsvTable table({"test", quantity.column});
     for (const auto& t : tests)
     {
         if (pred.count(t.test)) table.addRow({double(t.test), pred.at(t.test)});
@@ -607,7 +622,8 @@ int score(const Args& a)
         if (!a.has("png")) throw drum::InputError("", "-pngModels", "belongs to -png (the picture it selects for)");
         drawn = commaList(a.get("pngModels"), "-pngModels");
     }
-    windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"), drawn);
+    windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"), drawn,
+                                 windTunnelDrift::scoredQuantity(a.get("quantity", "advance")));
     return 0;
 }
 

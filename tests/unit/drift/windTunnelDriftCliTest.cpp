@@ -7,6 +7,7 @@
 #include "drum/io/csv.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "particleDrag/loneParticleFall.hpp"
+#include "particleDrag/sheetVelocity.hpp"
 #include "syntheticTable.hpp"
 #include "testTempDir.hpp"
 
@@ -381,6 +382,74 @@ TEST(WindTunnelDriftCli, ScoresMatchTheDataReadme)
     EXPECT_FALSE(fs::exists(csv2));
 }
 
+
+TEST(WindTunnelDriftCli, ApparentVcIsEq141OnEachModelsClassAdvancesScoredAgainstTheTunnelsVc)
+{
+    // the lone particle in V_g gives back V_g; Eq 142's gives back C_V V_g, and its
+    // score against the tunnel's V_c is Eq 142's own error on the rows that have one
+    const fs::path iso = dir()/"vcIsolated.csv", sh = dir()/"vcSherritt.csv";
+    CliRun r = run("-tests " + tests + " -out " + iso.string() + " -model isolated -quantity apparentVc");
+    ASSERT_EQ(r.rc, 0) << r.out;
+    ASSERT_EQ(run("-tests " + tests + " -out " + sh.string() + " -model sherritt -quantity apparentVc").rc, 0);
+    EXPECT_EQ(text(iso).substr(0, 15), "test,vc_m_s\n11,");
+    const auto measuredVc = drum::readMeasured(data/"windtunnel_tests.csv", "vc_m_s", true);
+    std::map<int, double> vg, cv;
+    {
+        io::CSVReader<6> in((data/"windtunnel_tests.csv").string());
+        in.read_header(io::ignore_extra_column, "test", "air_velocity_m_s", "fall_height_m", "spill_rate_kg_m_s",
+                       "flight_length_m", "vc_m_s");
+        int t;
+        double v, y, spill, l;
+        std::string vc;
+        while (in.read_row(t, v, y, spill, l, vc))
+        {
+            vg[t] = v;
+            cv[t] = particleDrag::sherrittSheetVelocityRatio(y, spill, l);
+        }
+    }
+    const auto isoVc = drum::readMeasured(iso, "vc_m_s"), shVc = drum::readMeasured(sh, "vc_m_s");
+    ASSERT_EQ(isoVc.size(), 69u);
+    double sum2 = 0;
+    for (const auto& [t, v] : vg)
+    {
+        EXPECT_NEAR(isoVc.at(t), v, 1e-6*v) << "test " << t;
+        EXPECT_NEAR(shVc.at(t), cv.at(t)*v, 1e-6*v) << "test " << t;
+        if (measuredVc.count(t)) sum2 += std::pow(std::log(cv.at(t)*v/measuredVc.at(t)), 2);
+    }
+    const fs::path csv = dir()/"vcScores.csv";
+    r = run("-score -quantity apparentVc -tests " + tests + " -predictions sherritt=" + sh.string() + " -out "
+            + csv.string());
+    ASSERT_EQ(r.rc, 0) << r.out;
+    io::CSVReader<4> in(csv.string());
+    in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
+    std::string m, y;
+    int n;
+    double rms;
+    bool all = false;
+    while (in.read_row(m, y, n, rms))
+    {
+        if (y != "all") continue;
+        all = true;
+        EXPECT_EQ(n, 67);   // tests 73 and 74 have no V_c
+        EXPECT_NEAR(rms, std::sqrt(sum2/67), 1e-3);   // 4 printed digits
+    }
+    EXPECT_TRUE(all);
+    // an advance file is not a V_c file; unknown quantities, and cfd (bulk advance
+    // only), are refused and write nothing
+    const fs::path advance = dir()/"advanceIsolated.csv";
+    ASSERT_EQ(run("-tests " + tests + " -out " + advance.string() + " -model isolated").rc, 0);
+    r = run("-score -quantity apparentVc -tests " + tests + " -predictions iso=" + advance.string()
+            + " -out " + (dir()/"vcBad.csv").string());
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("vc_m_s"), std::string::npos) << r.out;
+    r = run("-tests " + tests + " -out " + (dir()/"vcBad.csv").string() + " -model isolated -quantity drift");
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("'drift': valid names are advance, apparentVc"), std::string::npos) << r.out;
+    r = run("-tests " + tests + " -out " + (dir()/"vcBad.csv").string() + " -model cfd -quantity apparentVc");
+    EXPECT_NE(r.rc, 0);
+    EXPECT_NE(r.out.find("bulk advance only"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir()/"vcBad.csv"));
+}
 
 TEST(WindTunnelDriftCli, CfdRunsCurtainCasePerRow)
 {

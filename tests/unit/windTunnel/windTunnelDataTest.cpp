@@ -132,3 +132,24 @@ TEST(WindTunnelData, MalformedFilesAreRefusedNamingTheProblem)
     const auto msg = expectInputError([&] { readWindTunnelTests("/nonexistent/tests.csv", materials); });
     EXPECT_NE(msg.find("file not found"), std::string::npos) << msg;
 }
+
+TEST(WindTunnelData, MeasuredColumnsAndTheTestsThatDidNotMeasureThem)
+{
+    // the shared rows: every test has its advance, 67 of 69 their V_c (Eq 141)
+    const fs::path data = drum::dataDir()/"windtunnel_tests.csv";
+    EXPECT_EQ(readMeasured(data, "mean_advance_m").size(), 69u);
+    const auto vc = readMeasured(data, "vc_m_s", true);
+    EXPECT_EQ(vc.size(), 67u);
+    EXPECT_DOUBLE_EQ(vc.at(26), 0.66);   // Table A.2, test 26
+    EXPECT_EQ(vc.count(73) + vc.count(74), 0u);   // printed without V_c
+
+    TempCsv f("test,mean_advance_m,vc_m_s\n1,0.5,0.3\n2,0.7,\n");
+    EXPECT_EQ(readMeasured(f.path, "vc_m_s", true).size(), 1u);
+    // an empty cell is an error unless the column may go unmeasured
+    const auto msg = expectInputError([&] { readMeasured(f.path, "vc_m_s"); });
+    EXPECT_NE(msg.find("vc_m_s"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("not a number"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(f.path.string()), std::string::npos) << msg;
+    const auto missing = expectInputError([&] { readMeasured(f.path, "drift_m"); });
+    EXPECT_NE(missing.find("drift_m"), std::string::npos) << missing;
+}

@@ -172,23 +172,34 @@ std::vector<WindTunnelTest> readWindTunnelTests
 }
 
 
-std::map<int, double> readMeasuredAdvance(const std::filesystem::path& file)
+std::map<int, double> readMeasured
+(
+    const std::filesystem::path& file,
+    const std::string& column,
+    bool emptyIsUnmeasured
+)
 {
     const std::string fname = file.string();
     return guarded(file, [&]
     {
         io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(fname);
-        in.read_header(io::ignore_extra_column, "test", "mean_advance_m");
+        in.read_header(io::ignore_extra_column, "test", column);
         std::map<int, double> measured;
-        std::string id, adv;
-        while (in.read_row(id, adv))
+        std::string id, value;
+        while (in.read_row(id, value))
         {
             const int line = static_cast<int>(in.get_file_line());
-            measured[static_cast<int>(toDouble(id, fname, line, "test"))] =
-                toDouble(adv, fname, line, "mean_advance_m");
+            if (value.empty() && emptyIsUnmeasured) continue;   // not measured in this test
+            measured[static_cast<int>(toDouble(id, fname, line, "test"))] = toDouble(value, fname, line, column);
         }
         return measured;
     });
+}
+
+
+std::map<int, double> readMeasuredAdvance(const std::filesystem::path& file)
+{
+    return readMeasured(file, "mean_advance_m");
 }
 
 } // namespace drum

@@ -66,6 +66,17 @@ std::vector<WindTunnelTest> readWindTunnelTests
     const std::map<std::string, WindTunnelMaterial>& materials
 );
 
+//- One measured quantity per test, for scoring only: the column `column`
+//  (mean_advance_m, or vc_m_s: Sherritt's apparent in-sheet gas velocity,
+//  Eq 141) keyed by test. An empty cell is an error, or, with
+//  emptyIsUnmeasured, a test that did not measure it, left out
+std::map<int, double> readMeasured
+(
+    const std::filesystem::path& file,
+    const std::string& column,
+    bool emptyIsUnmeasured = false
+);
+
 //- The measured mean advance per test, for scoring only
 std::map<int, double> readMeasuredAdvance(const std::filesystem::path& file);
 
