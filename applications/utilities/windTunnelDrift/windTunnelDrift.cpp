@@ -14,7 +14,8 @@
 //                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
 //                [-quantity advance|apparentVc]  (the bulk mean advance, default, or
 //                                 Sherritt's apparent in-sheet gas velocity: Eq 141 on the
-//                                 model's class advances; not cfd)
+//                                 model's class advances, in the air of his analysis,
+//                                 20 degC and 1 atm, whatever -gasPressure; not cfd)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
@@ -423,6 +424,9 @@ int predict(const Args& a)
     // -gasPressure: the tunnel's site pressure (a table swept at another gas is refused)
     const double pressure = gasPressure(a);
     const particleDrag::Gas air = particleDrag::Gas::air(20, pressure);
+    // Eq 141 as Sherritt evaluated it, in his code's air (20 degC, 1 atm), whatever air
+    // the model breathed: the model's V_c is then measured as the tunnel's was
+    const particleDrag::Gas sherrittAnalysisAir = particleDrag::Gas::air(20);
 
     std::map<int, double> pred;
     if (model == "cfd")
@@ -537,7 +541,8 @@ int predict(const Args& a)
                         "serves that material only; give a table without one, or one for " + t.material + ")");
                 }
                 const auto& mat = materials.at(t.material);
-                pred[t.test] = apparentVc ? drum::predictApparentSheetVelocity(*models.at(t.material), t, mat, air)
+                pred[t.test] = apparentVc ? drum::predictApparentSheetVelocity(*models.at(t.material), t, mat,
+                                                                               sherrittAnalysisAir)
                                           : drum::predictMeanAdvance(*models.at(t.material), t, mat);
             }
             catch (const drum::InputError& e)

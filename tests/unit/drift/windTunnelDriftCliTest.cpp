@@ -416,6 +416,16 @@ TEST(WindTunnelDriftCli, ApparentVcIsEq141OnEachModelsClassAdvancesScoredAgainst
         EXPECT_NEAR(shVc.at(t), cv.at(t)*v, 1e-6*v) << "test " << t;
         if (measuredVc.count(t)) sum2 += std::pow(std::log(cv.at(t)*v/measuredVc.at(t)), 2);
     }
+    // Eq 141 is evaluated in Sherritt's air (1 atm) whatever the model breathed: the lone
+    // particle in the site's lighter air drifts less, so its apparent V_c lies below V_g
+    const fs::path thin = dir()/"vcIsolated89.csv";
+    ASSERT_EQ(run("-tests " + tests + " -out " + thin.string() + " -model isolated -quantity apparentVc "
+                  "-gasPressure 89").rc, 0);
+    for (const auto& [t, v] : drum::readMeasured(thin, "vc_m_s"))
+    {
+        EXPECT_LT(v, 0.995*vg.at(t)) << "test " << t;
+        EXPECT_GT(v, 0.85*vg.at(t)) << "test " << t;
+    }
     const fs::path csv = dir()/"vcScores.csv";
     r = run("-score -quantity apparentVc -tests " + tests + " -predictions sherritt=" + sh.string() + " -out "
             + csv.string());

@@ -5,8 +5,9 @@
 // two smallest classes left out:
 //     sum_i x_i (delta_i - delta_i(V_c))^2 = minimum                  (Eq 141)
 // The tunnel's V_c (data/windtunnel_tests.csv, vc_m_s) is this fit to the
-// measured class advances; applied to a model's class advances it gives the
-// model's V_c measured the same way.
+// measured class advances, in the air of his code (20 degC, 1 atm); applied
+// to a model's class advances in that air it gives the model's V_c measured
+// the same way, whatever air the model itself breathed.
 #ifndef DRUM_WINDTUNNEL_APPARENTSHEETVELOCITY_HPP
 #define DRUM_WINDTUNNEL_APPARENTSHEETVELOCITY_HPP
 
