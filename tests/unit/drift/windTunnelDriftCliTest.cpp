@@ -67,6 +67,24 @@ std::map<int, std::pair<double, double>> reference()
     return m;
 }
 
+//- Each model's overall row (fall_height_m "all") of a -score CSV: count and RMS ln;
+//  the rows per fall height counted in `perHeight`
+std::map<std::string, std::pair<int, double>> overallScores(const fs::path& csv, int* perHeight = nullptr)
+{
+    std::map<std::string, std::pair<int, double>> all;
+    io::CSVReader<4> in(csv.string());
+    in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
+    std::string m, y;
+    int n;
+    double rms;
+    while (in.read_row(m, y, n, rms))
+    {
+        if (y == "all") all[m] = {n, rms};
+        else if (perHeight) ++*perHeight;
+    }
+    return all;
+}
+
 std::string text(const fs::path& f)
 {
     std::ifstream in(f);
@@ -332,17 +350,12 @@ TEST(WindTunnelDriftCli, ScoresMatchTheDataReadme)
                       + ",sherritt=" + (dir()/"sherritt.csv").string() + " -out " + csv.string()
                       + " -byMaterial " + byMat.string());
     ASSERT_EQ(r.rc, 0) << r.out;
-    io::CSVReader<4> in(csv.string());
-    in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
-    std::string m, y;
-    int n;
-    double rms;
-    std::map<std::string, double> overall;
     int rowsPerHeight = 0;
-    while (in.read_row(m, y, n, rms))
+    std::map<std::string, double> overall;
+    for (const auto& [model, score] : overallScores(csv, &rowsPerHeight))
     {
-        if (y == "all") { overall[m] = rms; EXPECT_EQ(n, 69); }
-        else ++rowsPerHeight;
+        overall[model] = score.second;
+        EXPECT_EQ(score.first, 69) << model;
     }
     EXPECT_EQ(rowsPerHeight, 4);   // 6.6 and 10.3 m for two models
     EXPECT_NEAR(overall.at("isolated"), 0.88, 0.005);   // data/README.md
@@ -352,6 +365,9 @@ TEST(WindTunnelDriftCli, ScoresMatchTheDataReadme)
     bm.read_header(io::ignore_extra_column, "model", "material", "count", "rms_ln");
     std::map<std::string, int> count;
     std::map<std::string, double> sumSq;
+    std::string m, y;
+    int n;
+    double rms;
     while (bm.read_row(m, y, n, rms))
     {
         if (m == "sherritt") count[y] = n;
@@ -430,20 +446,10 @@ TEST(WindTunnelDriftCli, ApparentVcIsEq141OnEachModelsClassAdvancesScoredAgainst
     r = run("-score -quantity apparentVc -tests " + tests + " -predictions sherritt=" + sh.string() + " -out "
             + csv.string());
     ASSERT_EQ(r.rc, 0) << r.out;
-    io::CSVReader<4> in(csv.string());
-    in.read_header(io::ignore_extra_column, "model", "fall_height_m", "count", "rms_ln");
-    std::string m, y;
-    int n;
-    double rms;
-    bool all = false;
-    while (in.read_row(m, y, n, rms))
-    {
-        if (y != "all") continue;
-        all = true;
-        EXPECT_EQ(n, 67);   // tests 73 and 74 have no V_c
-        EXPECT_NEAR(rms, std::sqrt(sum2/67), 1e-3);   // 4 printed digits
-    }
-    EXPECT_TRUE(all);
+    const auto all = overallScores(csv);
+    ASSERT_EQ(all.count("sherritt"), 1u);
+    EXPECT_EQ(all.at("sherritt").first, 67);   // tests 73 and 74 have no V_c
+    EXPECT_NEAR(all.at("sherritt").second, std::sqrt(sum2/67), 1e-3);   // 4 printed digits
     // an advance file is not a V_c file; unknown quantities, and cfd (bulk advance
     // only), are refused and write nothing
     const fs::path advance = dir()/"advanceIsolated.csv";

@@ -10,6 +10,7 @@
 #include "particleDrag/sheetVelocity.hpp"
 #include "scoring/apparentSheetVelocity.hpp"
 #include "scoring/windTunnelData.hpp"
+#include "expectInputError.hpp"
 
 #include <gtest/gtest.h>
 
@@ -60,20 +61,6 @@ std::pair<std::size_t, std::size_t> twoSmallest(const WindTunnelMaterial& m)
     for (std::size_t k = 0; k < i.size(); ++k) i[k] = k;
     std::sort(i.begin(), i.end(), [&](auto a, auto b) { return m.classes[a].diameter < m.classes[b].diameter; });
     return {i[0], i[1]};
-}
-
-std::string inputError(const std::function<void()>& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const InputError& e)
-    {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
 }
 
 } // namespace
@@ -156,23 +143,23 @@ TEST(ApparentSheetVelocity, RefusesWhatEq141CannotAnswer)
     const auto t = tunnelTest(4.0, 10.3);
     auto a = loneAdvances(sand, 2.0, t.fallHeight);
 
-    auto msg = inputError([&] { apparentSheetVelocity(t, sand, {1.0, 2.0}, air); });
+    auto msg = expectInputError([&] { apparentSheetVelocity(t, sand, {1.0, 2.0}, air); });
     EXPECT_NE(msg.find("one advance per size class"), std::string::npos) << msg;
     EXPECT_NE(msg.find("test 901"), std::string::npos) << msg;
 
     WindTunnelMaterial two = sand;
     two.classes.resize(2);
-    msg = inputError([&] { apparentSheetVelocity(t, two, {1.0, 2.0}, air); });
+    msg = expectInputError([&] { apparentSheetVelocity(t, two, {1.0, 2.0}, air); });
     EXPECT_NE(msg.find("at least 3"), std::string::npos) << msg;
 
     auto bad = a;
     bad[0] = std::numeric_limits<double>::quiet_NaN();   // the coarsest class (the file lists it first)
-    msg = inputError([&] { apparentSheetVelocity(t, sand, bad, air); });
+    msg = expectInputError([&] { apparentSheetVelocity(t, sand, bad, air); });
     EXPECT_NE(msg.find("not finite"), std::string::npos) << msg;
 
     // advances no gas within 4 V_g makes: the fit ends on the bound and is refused
     std::vector<double> far(a.size(), 1e3);
-    msg = inputError([&] { apparentSheetVelocity(t, sand, far, air); });
+    msg = expectInputError([&] { apparentSheetVelocity(t, sand, far, air); });
     EXPECT_NE(msg.find("Eq 141"), std::string::npos) << msg;
     EXPECT_NE(msg.find("[0.001, 4] V_g"), std::string::npos) << msg;
 }

@@ -2,6 +2,7 @@
 #include "drum/io/projectPaths.hpp"
 #include "drum/io/inputError.hpp"
 #include "scoring/windTunnelData.hpp"
+#include "expectInputError.hpp"
 
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
@@ -36,20 +37,6 @@ struct TempCsv
     ~TempCsv() { fs::remove(path); }
     static int next() { static int n = 0; return ++n; }
 };
-
-std::string expectInputError(const std::function<void()>& f)
-{
-    try
-    {
-        f();
-    }
-    catch (const InputError& e)
-    {
-        return e.what();
-    }
-    ADD_FAILURE() << "no InputError";
-    return "";
-}
 
 } // namespace
 
