@@ -40,7 +40,7 @@ std::string quote(const std::string& s)
 } // namespace
 
 
-double readCurtainResult
+CfdRow readCurtainResult
 (
     const fs::path& file,
     double fallHeight,
@@ -93,7 +93,7 @@ double readCurtainResult
     {
         throw InputError(f, "", std::string("malformed curtainResult.csv: ") + e.what());
     }
-    double sum = 0;
+    CfdRow row;
     for (std::size_t i = 0; i < diameters.size(); ++i)
     {
         if (std::isnan(drift[i]))
@@ -102,13 +102,14 @@ double readCurtainResult
             os << "no row for diameter " << diameters[i] << " m at fall height " << fallHeight << " m";
             throw InputError(f, "class rows", os.str());
         }
-        sum += fractions[i]*drift[i];
+        row.advance += fractions[i]*drift[i];
     }
-    return sum;
+    row.classAdvance = drift;
+    return row;
 }
 
 
-double readLandingAdvance
+CfdRow readLandingAdvance
 (
     const fs::path& file,
     double fallHeight,
@@ -116,11 +117,18 @@ double readLandingAdvance
 )
 {
     const auto classes = drum::landingAt(drum::readLandingFile(file), fallHeight, fractions.size(), file);
-    return drum::collectedAdvance(classes, fractions, drum::TunnelFloor{}, file.string()).advance;
+    CfdRow row;
+    row.advance = drum::collectedAdvance(classes, fractions, drum::TunnelFloor{}, file.string()).advance;
+    for (std::size_t i = 0; i < classes.size(); ++i)
+    {
+        row.classAdvance.push_back(
+            drum::classCollectedAdvance(classes[i], drum::TunnelFloor{}, file.string(), i).advance);
+    }
+    return row;
 }
 
 
-std::map<int, double> cfdPredictions
+std::map<int, CfdRow> cfdPredictions
 (
     const std::vector<drum::WindTunnelTest>& tests,
     const std::map<std::string, drum::WindTunnelMaterial>& materials,
@@ -138,7 +146,7 @@ std::map<int, double> cfdPredictions
         fs::path dir, log;
         std::vector<double> d, w;
         bool ok = false;
-        double advance = 0;
+        CfdRow result;
         std::string error;
     };
     std::vector<Row> rows(tests.size());
@@ -209,7 +217,7 @@ std::map<int, double> cfdPredictions
                     throw InputError(r.log.string(), "test " + std::to_string(t.test),
                         "curtainCase failed (exit " + std::to_string(rc) + "); command: " + r.cmd);
                 }
-                r.advance = o.collection == "landed"
+                r.result = o.collection == "landed"
                     ? readCurtainResult(r.dir/"curtainResult.csv", t.fallHeight, r.d, r.w)
                     : readLandingAdvance(r.dir/"curtainLanding.csv", t.fallHeight, r.w);
                 r.ok = true;
@@ -227,7 +235,7 @@ std::map<int, double> cfdPredictions
             msg << "windTunnelDrift: cfd " << done << "/" << rows.size() << ": test " << t.test << " ";
             if (r.ok)
             {
-                msg << std::fixed << std::setprecision(3) << r.advance << " m in " << std::setprecision(0)
+                msg << std::fixed << std::setprecision(3) << r.result.advance << " m in " << std::setprecision(0)
                     << row << " s; about " << el/done*(rows.size() - done) << " s left";
             }
             else
@@ -246,12 +254,12 @@ std::map<int, double> cfdPredictions
     for (int j = 0; j < std::max(1, o.jobs); ++j) pool.emplace_back(work);
     for (auto& th : pool) th.join();
 
-    std::map<int, double> out;
+    std::map<int, CfdRow> out;
     for (std::size_t k = 0; k < rows.size(); ++k)
     {
         if (rows[k].ok)
         {
-            out[tests[k].test] = rows[k].advance;
+            out[tests[k].test] = rows[k].result;
         }
         else if (!o.skipFailed && !rows[k].error.empty())
         {

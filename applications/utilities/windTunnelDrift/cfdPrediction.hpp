@@ -43,30 +43,38 @@ struct CfdOptions
     std::string collection = "sherritt";
 };
 
-//- Bulk mean advance per test: sum_i x_i drift_i at the row's fall height
-//  over the class rows of curtainResult.csv. Progress goes to std::cout.
-//  A failed row throws, or with skipFailed is left out of the map (its log
-//  and case folder are kept under work).
-std::map<int, double> cfdPredictions
+//- One row's answer: the bulk mean advance and each size class's advance
+//  (in the order of the material's classes), measured as CfdOptions::collection says
+struct CfdRow
+{
+    double advance = 0;
+    std::vector<double> classAdvance;
+};
+
+//- Per test: the bulk mean advance, sum_i x_i a_i at the row's fall height,
+//  and the classes' a_i. Progress goes to std::cout. A failed row throws,
+//  or with skipFailed is left out of the map (its log and case folder are
+//  kept under work).
+std::map<int, CfdRow> cfdPredictions
 (
     const std::vector<drum::WindTunnelTest>& tests,
     const std::map<std::string, drum::WindTunnelMaterial>& materials,
     const CfdOptions& options
 );
 
-//- Read one curtainLanding.csv: the bulk advance the wind tunnel would have
-//  recorded at fall height y (its collection rule), classes c0, c1, ... in the
-//  order of `fractions`
-double readLandingAdvance
+//- Read one curtainLanding.csv: what the wind tunnel would have recorded at
+//  fall height y (its collection rule), for the bulk and for each class c0,
+//  c1, ... in the order of `fractions`
+CfdRow readLandingAdvance
 (
     const std::filesystem::path& file,
     double fallHeight,
     const std::vector<double>& fractions
 );
 
-//- Read one curtainResult.csv: the mass-weighted drift at fall height y of
-//  the classes with the given diameters and fractions (matched by diameter)
-double readCurtainResult
+//- Read one curtainResult.csv: the drift at fall height y of the classes
+//  with the given diameters (matched by diameter) and their mass-weighted mean
+CfdRow readCurtainResult
 (
     const std::filesystem::path& file,
     double fallHeight,

@@ -12,14 +12,14 @@
 //                                 or the mean drift of what crossed the fall height)
 //                [-sieveBottom UM]    (lower bound of the open bottom sieve bin, default 37)
 //                [-sheetConstants k,a,b,c]  (sherritt: Eq 142 refitted, for out-of-sample scores)
-//                [-quantity advance|apparentVc]  (the bulk mean advance, default, or
-//                                 Sherritt's apparent in-sheet gas velocity: Eq 141 on the
-//                                 model's class advances, in the air of his analysis,
-//                                 20 degC and 1 atm, whatever -gasPressure; not cfd)
+//                [-quantity advance|apparentVc|advance,apparentVc]  (the bulk mean
+//                                 advance, default, and/or Sherritt's apparent in-sheet gas
+//                                 velocity: Eq 141 on the model's class advances, in the air
+//                                 of his analysis, 20 degC and 1 atm, whatever -gasPressure)
 //                [-skipFailed]   (a row the model cannot answer - a failed CFD run, a
 //                                 table query needing a missing grid point or outside
 //                                 the range under refuse - is reported and left out)
-//       writes test,mean_advance_m (or test,vc_m_s) for every row of FILE.csv
+//       writes test,mean_advance_m (and/or vc_m_s) for every row of FILE.csv
 //       (columns of data/windtunnel_tests.csv; the measured values are never read)
 //   windTunnelDrift -tunnelReading LANDING.csv -out READING.csv
 //       the tunnel's reading of each class of one curtainCase run, at every
@@ -75,7 +75,7 @@ const char* usage =
     "               [-layerThickness packed|B] [-gasPressure P]\n"
     "               [-sheetConstants k,a,b,c]\n"
     "               [-work DIR] [-keep] [-skipFailed] [-collection sherritt|landed] [-jobs N]\n"
-    "               [-quantity advance|apparentVc]\n"
+    "               [-quantity advance|apparentVc|advance,apparentVc]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
     "               [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc]\n"
@@ -409,13 +409,17 @@ int predict(const Args& a)
         throw drum::InputError("", "-model", "segmentVc reads a drum segment's curtains by release angle; a "
                                "wind-tunnel test has one slot and no flights: use table or tableVc");
     }
-    // -quantity: the bulk advance, or the apparent in-sheet velocity of Eq 141
-    const auto quantity = windTunnelDrift::scoredQuantity(a.get("quantity", "advance"));
-    const bool apparentVc = quantity.column == "vc_m_s";
-    if (apparentVc && model == "cfd")
+    // -quantity: the bulk advance and/or the apparent in-sheet velocity of Eq 141, a
+    // column each (advance,apparentVc: both from one run of the model)
+    std::vector<std::string> columns;
+    for (const auto& name : commaList(a.get("quantity", "advance"), "-quantity"))
     {
-        throw drum::InputError("", "-quantity", "apparentVc fits Eq 141 to each class's advance; the cfd rows "
-                               "give the bulk advance only: use -model table on a table of the same physics");
+        const std::string c = windTunnelDrift::scoredQuantity(name).column;
+        if (std::find(columns.begin(), columns.end(), c) != columns.end())
+        {
+            throw drum::InputError("", "-quantity", "'" + name + "' given twice");
+        }
+        columns.push_back(c);
     }
     const fs::path matFile = a.get("materials", defaultMaterials().string());
     const auto materials = drum::readWindTunnelMaterials(matFile, sieveClosure(a));
@@ -428,7 +432,31 @@ int predict(const Args& a)
     // the model breathed: the model's V_c is then measured as the tunnel's was
     const particleDrag::Gas sherrittAnalysisAir = particleDrag::Gas::air(20);
 
-    std::map<int, double> pred;
+    // each answered row's values, in the order of `columns`
+    std::map<int, std::vector<double>> pred;
+    // the row's values from its bulk advance and its class advances (Eq 141 for V_c);
+    // a row Eq 141 cannot answer is refused, or left out with -skipFailed
+    const auto answer = [&](const drum::WindTunnelTest& t, double advance, const std::vector<double>& classes)
+    {
+        try
+        {
+            std::vector<double> v;
+            for (const auto& c : columns)
+            {
+                v.push_back(c == "mean_advance_m" ? advance
+                    : drum::apparentSheetVelocity(t, materials.at(t.material), classes, sherrittAnalysisAir));
+            }
+            pred[t.test] = v;
+        }
+        catch (const drum::InputError& e)
+        {
+            if (!a.has("skipFailed"))
+            {
+                throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
+            }
+            std::cout << "windTunnelDrift: test " << t.test << " left out: " << e.what() << "\n";
+        }
+    };
     if (model == "cfd")
     {
         windTunnelDrift::CfdOptions o;
@@ -481,7 +509,12 @@ int predict(const Args& a)
         o.keep = a.has("keep");
         o.skipFailed = a.has("skipFailed");
         o.work = a.get("work", (fs::temp_directory_path()/("windTunnelDrift_" + std::to_string(::getpid()))).string());
-        pred = windTunnelDrift::cfdPredictions(tests, materials, o);
+        const auto rows = windTunnelDrift::cfdPredictions(tests, materials, o);
+        for (const auto& t : tests)
+        {
+            const auto it = rows.find(t.test);
+            if (it != rows.end()) answer(t, it->second.advance, it->second.classAdvance);
+        }
         if (pred.size() < tests.size())
         {
             std::cout << "windTunnelDrift: " << tests.size() - pred.size() << " of " << tests.size()
@@ -541,9 +574,15 @@ int predict(const Args& a)
                         "serves that material only; give a table without one, or one for " + t.material + ")");
                 }
                 const auto& mat = materials.at(t.material);
-                pred[t.test] = apparentVc ? drum::predictApparentSheetVelocity(*models.at(t.material), t, mat,
-                                                                               sherrittAnalysisAir)
-                                          : drum::predictMeanAdvance(*models.at(t.material), t, mat);
+                // each class's advance, and their feed-weighted sum (predictMeanAdvance's)
+                std::vector<double> classes;
+                double advance = 0;
+                for (const auto& c : mat.classes)
+                {
+                    classes.push_back(models.at(t.material)->displacement(drum::windTunnelQuery(t, mat, c)));
+                    advance += c.massFraction*classes.back();
+                }
+                answer(t, advance, classes);
             }
             catch (const drum::InputError& e)
             {
@@ -575,10 +614,15 @@ int predict(const Args& a)
             }
         }
     }
-    drum::CsvTable table({"test", quantity.column});
+    std::vector<std::string> header{"test"};
+    header.insert(header.end(), columns.begin(), columns.end());
+    drum::CsvTable table(header);
     for (const auto& t : tests)
     {
-        if (pred.count(t.test)) table.addRow({double(t.test), pred.at(t.test)});
+        if (!pred.count(t.test)) continue;
+        std::vector<double> row{double(t.test)};
+        row.insert(row.end(), pred.at(t.test).begin(), pred.at(t.test).end());
+        table.addRow(row);
     }
     table.write(out);
     std::cout << "windTunnelDrift: " << table.rows().size() << " predictions (" << model << ") written to " << out.string() << "\n";

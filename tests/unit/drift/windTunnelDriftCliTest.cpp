@@ -5,6 +5,7 @@
 // input: clear errors, no output file, an existing output left untouched.
 #include "drum/io/projectPaths.hpp"
 #include "drum/io/csv.hpp"
+#include "scoring/apparentSheetVelocity.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
@@ -450,8 +451,8 @@ TEST(WindTunnelDriftCli, ApparentVcIsEq141OnEachModelsClassAdvancesScoredAgainst
     ASSERT_EQ(all.count("sherritt"), 1u);
     EXPECT_EQ(all.at("sherritt").first, 67);   // tests 73 and 74 have no V_c
     EXPECT_NEAR(all.at("sherritt").second, std::sqrt(sum2/67), 1e-3);   // 4 printed digits
-    // an advance file is not a V_c file; unknown quantities, and cfd (bulk advance
-    // only), are refused and write nothing
+    // an advance file is not a V_c file; unknown or repeated quantities are refused
+    // and write nothing
     const fs::path advance = dir()/"advanceIsolated.csv";
     ASSERT_EQ(run("-tests " + tests + " -out " + advance.string() + " -model isolated").rc, 0);
     r = run("-score -quantity apparentVc -tests " + tests + " -predictions iso=" + advance.string()
@@ -461,9 +462,10 @@ TEST(WindTunnelDriftCli, ApparentVcIsEq141OnEachModelsClassAdvancesScoredAgainst
     r = run("-tests " + tests + " -out " + (dir()/"vcBad.csv").string() + " -model isolated -quantity drift");
     EXPECT_NE(r.rc, 0);
     EXPECT_NE(r.out.find("'drift': valid names are advance, apparentVc"), std::string::npos) << r.out;
-    r = run("-tests " + tests + " -out " + (dir()/"vcBad.csv").string() + " -model cfd -quantity apparentVc");
+    r = run("-tests " + tests + " -out " + (dir()/"vcBad.csv").string() + " -model isolated "
+            "-quantity apparentVc,apparentVc");
     EXPECT_NE(r.rc, 0);
-    EXPECT_NE(r.out.find("bulk advance only"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("'apparentVc' given twice"), std::string::npos) << r.out;
     EXPECT_FALSE(fs::exists(dir()/"vcBad.csv"));
 }
 
@@ -539,6 +541,22 @@ TEST(WindTunnelDriftCli, CfdRunsCurtainCasePerRow)
         EXPECT_NEAR(advance, 4.725, 1e-9) << test;
     }
     EXPECT_NE(rule.out.find("cfd 3/3"), std::string::npos) << rule.out;
+    // both quantities from one run: the same advances, and Eq 141 (in Sherritt's air) on
+    // the classes' readings, 4.725 m each
+    const fs::path both = dir()/"cfdBoth.csv";
+    const CliRun twice = run("-tests " + few.string() + " -out " + both.string() + " -model cfd "
+                             "-quantity advance,apparentVc -gasPressure 89 -work " + (dir()/"workBoth").string(), path);
+    ASSERT_EQ(twice.rc, 0) << twice.out;
+    EXPECT_EQ(drum::readMeasured(both, "mean_advance_m"), ruled);
+    const auto vc = drum::readMeasured(both, "vc_m_s");
+    ASSERT_EQ(vc.size(), 3u);
+    for (const auto& t : rows)
+    {
+        const auto& m = materials.at(t.material);
+        const double expected = drum::apparentSheetVelocity(t, m, std::vector<double>(m.classes.size(), 4.725),
+                                                            particleDrag::Gas::air(20));
+        EXPECT_NEAR(vc.at(t.test), expected, 1e-9*expected) << t.test;
+    }
 
     const CliRun badName = run("-tests " + few.string() + " -out " + out.string() + " -model cfd -collection hopper",
                                path);
