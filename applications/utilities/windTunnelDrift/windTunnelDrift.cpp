@@ -52,6 +52,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <optional>
@@ -434,19 +435,24 @@ int predict(const Args& a)
 
     // each answered row's values, in the order of `columns`
     std::map<int, std::vector<double>> pred;
-    // the row's values from its bulk advance and its class advances (Eq 141 for V_c);
-    // a row Eq 141 cannot answer is refused, or left out with -skipFailed
+    // the row's values from its bulk advance and its class advances (Eq 141 for V_c)
     const auto answer = [&](const drum::WindTunnelTest& t, double advance, const std::vector<double>& classes)
+    {
+        std::vector<double> v;
+        for (const auto& c : columns)
+        {
+            v.push_back(c == "mean_advance_m" ? advance
+                : drum::apparentSheetVelocity(t, materials.at(t.material), classes, sherrittAnalysisAir));
+        }
+        pred[t.test] = v;
+    };
+    // runs one row's answer: a row the model cannot answer (an InputError) is refused,
+    // or reported and left out with -skipFailed
+    const auto eachRow = [&](const drum::WindTunnelTest& t, const std::function<void()>& body)
     {
         try
         {
-            std::vector<double> v;
-            for (const auto& c : columns)
-            {
-                v.push_back(c == "mean_advance_m" ? advance
-                    : drum::apparentSheetVelocity(t, materials.at(t.material), classes, sherrittAnalysisAir));
-            }
-            pred[t.test] = v;
+            body();
         }
         catch (const drum::InputError& e)
         {
@@ -513,7 +519,7 @@ int predict(const Args& a)
         for (const auto& t : tests)
         {
             const auto it = rows.find(t.test);
-            if (it != rows.end()) answer(t, it->second.advance, it->second.classAdvance);
+            if (it != rows.end()) eachRow(t, [&] { answer(t, it->second.advance, it->second.classAdvance); });
         }
         if (pred.size() < tests.size())
         {
@@ -565,7 +571,7 @@ int predict(const Args& a)
         }
         for (const auto& t : tests)
         {
-            try
+            eachRow(t, [&]
             {
                 if (!models.count(t.material))
                 {
@@ -574,24 +580,9 @@ int predict(const Args& a)
                         "serves that material only; give a table without one, or one for " + t.material + ")");
                 }
                 const auto& mat = materials.at(t.material);
-                // each class's advance, and their feed-weighted sum (predictMeanAdvance's)
-                std::vector<double> classes;
-                double advance = 0;
-                for (const auto& c : mat.classes)
-                {
-                    classes.push_back(models.at(t.material)->displacement(drum::windTunnelQuery(t, mat, c)));
-                    advance += c.massFraction*classes.back();
-                }
-                answer(t, advance, classes);
-            }
-            catch (const drum::InputError& e)
-            {
-                if (!a.has("skipFailed"))
-                {
-                    throw drum::InputError(testsFile.string(), "test " + std::to_string(t.test), e.what());
-                }
-                std::cout << "windTunnelDrift: test " << t.test << " left out: " << e.what() << "\n";
-            }
+                const auto classes = drum::classAdvances(*models.at(t.material), t, mat);
+                answer(t, drum::meanAdvance(mat, classes), classes);
+            });
         }
         if (pred.empty()) throw drum::InputError(testsFile.string(), "", "the model answered no row: nothing written");
         if (pred.size() < tests.size())

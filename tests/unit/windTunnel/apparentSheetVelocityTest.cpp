@@ -9,6 +9,7 @@
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 #include "scoring/apparentSheetVelocity.hpp"
+#include "scoring/windTunnelPrediction.hpp"
 #include "scoring/windTunnelData.hpp"
 #include "expectInputError.hpp"
 
@@ -128,11 +129,11 @@ TEST(ApparentSheetVelocity, LoneParticleModelsGiveBackTheirGasOnEverySharedRow)
     for (const auto& t : tests)
     {
         const auto& m = materials().at(t.material);
-        EXPECT_NEAR(predictApparentSheetVelocity(isolated, t, m, air), t.airVelocity, 1e-6*t.airVelocity)
+        EXPECT_NEAR(apparentSheetVelocity(t, m, classAdvances(isolated, t, m), air), t.airVelocity, 1e-6*t.airVelocity)
             << "test " << t.test;
         // Eq 142 with the code's exponents, capped at 1
         const double cv = particleDrag::sherrittSheetVelocityRatio(t.fallHeight, t.spillRate, t.flightLength);
-        EXPECT_NEAR(predictApparentSheetVelocity(sherritt, t, m, air), cv*t.airVelocity, 1e-6*t.airVelocity)
+        EXPECT_NEAR(apparentSheetVelocity(t, m, classAdvances(sherritt, t, m), air), cv*t.airVelocity, 1e-6*t.airVelocity)
             << "test " << t.test;
     }
 }

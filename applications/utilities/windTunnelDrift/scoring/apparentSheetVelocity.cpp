@@ -2,7 +2,6 @@
 
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
-#include "scoring/windTunnelPrediction.hpp"
 
 #include <ceres/ceres.h>
 
@@ -106,18 +105,5 @@ double apparentSheetVelocity
     return v;
 }
 
-
-double predictApparentSheetVelocity
-(
-    const DriftModel& model,
-    const WindTunnelTest& t,
-    const WindTunnelMaterial& m,
-    const particleDrag::Gas& air
-)
-{
-    std::vector<double> advance;
-    for (const auto& c : m.classes) advance.push_back(model.displacement(windTunnelQuery(t, m, c)));
-    return apparentSheetVelocity(t, m, advance, air);
-}
 
 } // namespace drum

@@ -11,7 +11,6 @@
 #ifndef DRUM_WINDTUNNEL_APPARENTSHEETVELOCITY_HPP
 #define DRUM_WINDTUNNEL_APPARENTSHEETVELOCITY_HPP
 
-#include "drum/drift/driftModel.hpp"
 #include "particleDrag/gasProperties.hpp"
 #include "scoring/windTunnelData.hpp"
 
@@ -39,15 +38,6 @@ double apparentSheetVelocity
     const std::vector<double>& classAdvance,
     const particleDrag::Gas& air,
     const ApparentVcBounds& bounds = ApparentVcBounds()
-);
-
-//- Eq 141 on a drift model's class advances of test t
-double predictApparentSheetVelocity
-(
-    const DriftModel& model,
-    const WindTunnelTest& t,
-    const WindTunnelMaterial& m,
-    const particleDrag::Gas& air
 );
 
 } // namespace drum

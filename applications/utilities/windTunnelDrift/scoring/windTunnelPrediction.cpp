@@ -17,13 +17,18 @@ DriftQuery windTunnelQuery(const WindTunnelTest& t, const WindTunnelMaterial& m,
 }
 
 
-double predictMeanAdvance(const DriftModel& model, const WindTunnelTest& t, const WindTunnelMaterial& m)
+std::vector<double> classAdvances(const DriftModel& model, const WindTunnelTest& t, const WindTunnelMaterial& m)
+{
+    std::vector<double> advance;
+    for (const auto& c : m.classes) advance.push_back(model.displacement(windTunnelQuery(t, m, c)));
+    return advance;
+}
+
+
+double meanAdvance(const WindTunnelMaterial& m, const std::vector<double>& classAdvance)
 {
     double sum = 0;
-    for (const auto& c : m.classes)
-    {
-        sum += c.massFraction*model.displacement(windTunnelQuery(t, m, c));
-    }
+    for (std::size_t i = 0; i < m.classes.size(); ++i) sum += m.classes[i].massFraction*classAdvance.at(i);
     return sum;
 }
 

@@ -8,14 +8,20 @@
 #include "drum/drift/driftModel.hpp"
 #include "scoring/windTunnelData.hpp"
 
+#include <vector>
+
 namespace drum
 {
 
 //- The drift query of one size class of a test (level duct, incline 0)
 DriftQuery windTunnelQuery(const WindTunnelTest& t, const WindTunnelMaterial& m, const SieveClass& c);
 
-//- sum_i x_i delta_i over the classes (x_i renormalised mass fractions)
-double predictMeanAdvance(const DriftModel& model, const WindTunnelTest& t, const WindTunnelMaterial& m);
+//- The model's advance delta_i of each class of m in test t, in the order of m.classes
+std::vector<double> classAdvances(const DriftModel& model, const WindTunnelTest& t, const WindTunnelMaterial& m);
+
+//- The bulk mean advance sum_i x_i delta_i (x_i renormalised mass fractions) of
+//  classAdvance, in the order of m.classes
+double meanAdvance(const WindTunnelMaterial& m, const std::vector<double>& classAdvance);
 
 } // namespace drum
 
