@@ -77,6 +77,30 @@ tail -n +2 "$work/sand.pred" | while IFS=, read -r t a; do
     awk -v a="$a" -v b="$b" 'BEGIN{exit !((a-b)^2 <= (1e-6*a)^2)}' || fail "test $t: $b, expected $a"
 done || exit 1
 
+# the second measurement, V_c (-quantity apparentVc): the same candidates on the 67 rows that
+# have one (tests 73 and 74, both at 6.6 m, have none and are not scored): 24 rows at 6.6 m,
+# 43 at 10.3 m, so the pooled held-out RMS ln is sqrt((24*0.3^2 + 43*ln(1.1)^2)/67) = 0.1951
+mkdir -p "$work/vc/predictions"
+awk -F, 'NR==1{print "test,vc_m_s"; next} {printf "%d,%.12g\n", $1, 1.1*($11 == "" ? 1 : $11)}' \
+    "$data/windtunnel_tests.csv" > "$work/vc/predictions/A.csv"
+awk -F, 'NR==1{print "test,vc_m_s"; next} {printf "%d,%.12g\n", $1, ($9 == "6.6" ? exp(0.3) : 1)*($11 == "" ? 1 : $11)}' \
+    "$data/windtunnel_tests.csv" > "$work/vc/predictions/B.csv"
+DRYER_DATA="$data" "$script" -quantity apparentVc -candidates A,B -results "$work/vc" -eq142 > "$work/log.vc" 2>&1 \
+    || { cat "$work/log.vc"; fail "crossValidate -quantity apparentVc exit $?"; }
+br="$work/vc/scoresBreakdown.csv"
+grep -q "^fall_height,10.3,A," "$work/vc/crossValidation.csv" || fail "V_c: 10.3 m held out: A not chosen"
+near "$(get cv_height all all)" 0.1951 "V_c: leave one fall height out"
+awk -F, '$1=="A" && $3=="all" {exit !($5==67)}' "$br" || fail "V_c: not scored on the 67 rows with a V_c"
+awk -F, '$1=="eq142_material" && $3=="all" {exit !($2=="out" && $5==67)}' "$br" \
+    || fail "V_c: eq142_material not scored out of sample on 67 rows"
+head -1 "$work/vc/predictions/cv_height.csv" | grep -qx "test,vc_m_s" || fail "V_c: cv_height.csv header"
+# an advance file is not a V_c file
+cp "$work/r/predictions/A.csv" "$work/vc/predictions/D.csv"
+if DRYER_DATA="$data" "$script" -quantity apparentVc -candidates D,B -results "$work/vc" -out "$work/bad" \
+    > "$work/log.bad" 2>&1 || [ $? -ne 2 ]; then cat "$work/log.bad"; fail "an advance file taken for V_c"; fi
+grep -q "D.csv: header \['test', 'mean_advance_m'\], expected test,vc_m_s" "$work/log.bad" \
+    || { cat "$work/log.bad"; fail "V_c: wrong header not named"; }
+
 # bad input
 sed 's/^11,.*/11,-1/' "$work/r/predictions/A.csv" > "$work/r/predictions/C.csv"
 mkdir -p "$work/bad"
