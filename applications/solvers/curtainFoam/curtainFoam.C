@@ -143,6 +143,12 @@ int main(int argc, char *argv[])
         if (runTime.writeTime())
         {
             lastGoodTime = runTime.timeName();
+            // Every field of this time is written and closed: mark the time
+            // folder a whole restart point (curtainCase resumes only from a
+            // marked time; a kill inside the write leaves it unmarked)
+            mkDir(runTime.timePath()/"uniform");
+            OFstream(runTime.timePath()/"uniform"/"curtainFoam.written")()
+                << runTime.timeName() << nl;
         }
 
         runTime.printExecutionTime(Info);
