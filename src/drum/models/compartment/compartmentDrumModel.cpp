@@ -5,6 +5,7 @@
 #include "drum/io/inputError.hpp"
 #include "drum/numerics/constants.hpp"
 #include "drum/rtd/rtdMoments.hpp"
+#include "drum/rtd/rtdResolution.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/compartment/compartmentDispersion.hpp"
 #include "drum/transport/compartment/compartmentFlightModel.hpp"
@@ -444,13 +445,15 @@ void CompartmentDrumModel::runWith
             std::cout << "drumSolver:   RTD " << pct << " % done" << std::endl;
         }
     };
+    const RtdMoments ex = exactMoments(sys, c_.rtd.pulseDuration);
+    requireResolvingStep(ex, c_.rtd.timeStep, c_.path.string());
     const RtdResult rtd = simulateRtd(sys, opt);
     for (const std::string& w : rtd.warnings)
     {
         say("warning: " + w);
     }
     const RtdMoments sm = sampledMoments(rtd.time, rtd.E);
-    const RtdMoments ex = exactMoments(sys, c_.rtd.pulseDuration);
+    requireSampledMomentsMatch(sm, ex, c_.rtd.timeStep, c_.rtd.recovery, c_.path.string());
 
     // summary.csv
     std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s", "rtd_std_s",

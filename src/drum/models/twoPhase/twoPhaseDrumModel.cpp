@@ -6,6 +6,7 @@
 #include "drum/models/runOutputs.hpp"
 #include "drum/numerics/constants.hpp"
 #include "drum/rtd/rtdMoments.hpp"
+#include "drum/rtd/rtdResolution.hpp"
 #include "drum/rtd/rtdSimulation.hpp"
 #include "drum/transport/axialDispersion.hpp"
 #include "drum/transport/twoPhase/twoPhaseModel.hpp"
@@ -257,6 +258,8 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
 
     // Each size class is its own network; the overall E is the feed-weighted
     // sum, each class run until the recovery (its E is 0 after its end)
+    const RtdMoments ex = exactMoments(net.system, c.rtd.pulseDuration);
+    requireResolvingStep(ex, c.rtd.timeStep, c.path.string());
     std::vector<double> time, E;
     double recovered = 0;
     std::vector<RtdMoments> classMoments(net.classSystems.size());
@@ -285,7 +288,7 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
         classMoments[k] = exactMoments(net.classSystems[k], c.rtd.pulseDuration);
     }
     const RtdMoments sm = sampledMoments(time, E);
-    const RtdMoments ex = exactMoments(net.system, c.rtd.pulseDuration);
+    requireSampledMomentsMatch(sm, ex, c.rtd.timeStep, c.rtd.recovery, c.path.string());
 
     // the leading columns are those of the compartment model
     std::vector<std::string> cols = {"holdup_kg", "airborne_fraction", "mean_residence_time_s",
