@@ -35,7 +35,8 @@ void writeScores
     const fs::path& png,
     const fs::path& byMaterial,
     const std::vector<std::string>& drawn,
-    const ScoredQuantity& quantity
+    const ScoredQuantity& quantity,
+    const bool allowMissing
 )
 {
     for (const auto& name : drawn)
@@ -86,8 +87,37 @@ void writeScores
     for (std::size_t k = 0; k < predictions.size(); ++k)
     {
         const auto& p = predictions[k];
-        const auto pred = drum::readMeasured(p.file, quantity.column);   // test,<the quantity's column>
+        std::map<int, int> lines;
+        const auto pred = drum::readMeasured(p.file, quantity.column, false, &lines);   // test,<the quantity's column>
         if (pred.empty()) throw drum::InputError(p.file.string(), "", "no predictions");
+        for (const auto& kv : pred)
+        {
+            if (!height.count(kv.first))
+            {
+                throw drum::InputError(p.file.string(), "test " + std::to_string(kv.first) + " (line "
+                    + std::to_string(lines.at(kv.first)) + ")", "not a test of " + testsFile.string());
+            }
+        }
+        std::vector<int> missing;
+        for (const auto& kv : measured)
+        {
+            if (!pred.count(kv.first)) missing.push_back(kv.first);
+        }
+        if (!missing.empty() && !allowMissing)
+        {
+            std::string list;
+            for (std::size_t i = 0; i < missing.size() && i < 10; ++i) list += (i ? ", " : "") + std::to_string(missing[i]);
+            if (missing.size() > 10) list += ", ...";
+            throw drum::InputError(p.file.string(), "test " + std::to_string(missing.front()),
+                "no prediction for " + std::to_string(missing.size()) + " measured test(s) of " + testsFile.string()
+              + " (" + list + "); each measured test needs one, or -allowMissing scores the model on the tests "
+                "it predicts");
+        }
+        if (!missing.empty())
+        {
+            std::cout << "windTunnelDrift: " << p.model << " predicts " << measured.size() - missing.size() << " of "
+                      << measured.size() << " measured tests (-allowMissing): scored on those\n";
+        }
         // one CSV row of scores
         const auto row = [&](std::ostringstream& out, const std::string& label, const drum::PredictionScore& s)
         {

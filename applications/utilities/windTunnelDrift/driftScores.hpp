@@ -34,7 +34,11 @@ ScoredQuantity scoredQuantity(const std::string& name);
 //- Writes csv (model,fall_height_m,count,rms_ln,bias_ln,within25) with
 //  fall_height_m "all" for the overall row, png if not empty (predicted
 //  against measured of the models in `drawn`, every model if it is empty),
-//  and byMaterial (model,material,count,rms_ln,bias_ln,within25) if not empty
+//  and byMaterial (model,material,count,rms_ln,bias_ln,within25) if not empty.
+//  A prediction file that repeats a test, predicts a test the tests file does
+//  not hold, or leaves out a measured test is refused naming the file, line and
+//  test; allowMissing scores a model on the measured tests it predicts (its count
+//  in the CSV) instead of refusing the ones it leaves out
 void writeScores
 (
     const std::filesystem::path& testsFile,
@@ -43,7 +47,8 @@ void writeScores
     const std::filesystem::path& png,
     const std::filesystem::path& byMaterial = {},
     const std::vector<std::string>& drawn = {},
-    const ScoredQuantity& quantity = ScoredQuantity()
+    const ScoredQuantity& quantity = ScoredQuantity(),
+    bool allowMissing = false
 );
 
 } // namespace windTunnelDrift

@@ -28,8 +28,10 @@
 //       least-squares constants of the reduced model on the CFD table(s)
 //   windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]
 //                [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc]
+//                [-allowMissing]
 //       RMS ln(pred/measured), bias and share within 25 % per model and fall height
-//       (and per material); the picture draws the -pngModels (default every model)
+//       (and per material); the picture draws the -pngModels (default every model);
+//       a measured test without a prediction is refused unless -allowMissing
 //
 // Models: isolated, sherritt, table, tableVc, porousSheet, cfd (README.md).
 #include "cfdPrediction.hpp"
@@ -79,7 +81,7 @@ const char* usage =
     "               [-quantity advance|apparentVc|advance,apparentVc]\n"
     "  windTunnelDrift -fit porousSheet -table FILE[,FILE...] -out CONSTANTS.yaml\n"
     "  windTunnelDrift -score -tests FILE.csv -predictions NAME=PRED.csv,... -out SCORES.csv [-png FILE]\n"
-    "               [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc]\n"
+    "               [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc] [-allowMissing]\n"
     "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
     "  windTunnelDrift -tunnelReading LANDING.csv -out READING.csv\n"
     "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
@@ -142,7 +144,7 @@ particleDrag::SheetVelocityConstants sheetConstants(const Args& a)
 
 Args parse(int argc, char** argv)
 {
-    static const std::set<std::string> flags{"keep", "score", "help", "skipFailed"};
+    static const std::set<std::string> flags{"keep", "score", "help", "skipFailed", "allowMissing"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "pngModels", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
         "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
@@ -153,6 +155,10 @@ Args parse(int argc, char** argv)
         std::string k = argv[i];
         if (k.size() < 2 || k[0] != '-') throw drum::InputError("", k, "unexpected argument\n" + std::string(usage));
         k = k.substr(1);
+        if (flags.count(k) || options.count(k))
+        {
+            if (a.flag.count(k) || a.value.count(k)) throw drum::InputError("", "-" + k, "given twice: give it once");
+        }
         if (flags.count(k)) { a.flag.insert(k); continue; }
         if (!options.count(k)) throw drum::InputError("", "-" + k, "unknown option\n" + std::string(usage));
         if (i + 1 >= argc) throw drum::InputError("", "-" + k, "needs a value");
@@ -663,7 +669,7 @@ int score(const Args& a)
         drawn = commaList(a.get("pngModels"), "-pngModels");
     }
     windTunnelDrift::writeScores(a.need("tests"), preds, a.need("out"), a.get("png"), a.get("byMaterial"), drawn,
-                                 windTunnelDrift::scoredQuantity(a.get("quantity", "advance")));
+                                 windTunnelDrift::scoredQuantity(a.get("quantity", "advance")), a.has("allowMissing"));
     return 0;
 }
 

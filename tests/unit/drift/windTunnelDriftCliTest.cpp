@@ -732,3 +732,48 @@ TEST(WindTunnelDriftCli, BadInputGivesClearErrorsAndNoOutput)
     EXPECT_NE(clamp.out.find("class queries clamped on particle_diameter_m"), std::string::npos) << clamp.out;
     EXPECT_EQ(readPred(out).size(), 69u);
 }
+
+TEST(WindTunnelDriftCli, RepeatedMissingAndUnknownTestsAreRefusedNamingFileLineAndTest)
+{
+    const fs::path out = dir()/"keepRows.csv";
+    const auto expectFail = [&](const std::string& args, const std::vector<std::string>& needles)
+    {
+        std::ofstream(out) << "keep\n";
+        const CliRun r = run(args + " -out " + out.string());
+        EXPECT_NE(r.rc, 0) << args;
+        for (const auto& n : needles) EXPECT_NE(r.out.find(n), std::string::npos) << n << " not in: " << r.out;
+        EXPECT_EQ(r.out.find("-skipFailed"), std::string::npos) << r.out;
+        EXPECT_EQ(text(out), "keep\n") << "output touched by a failed run: " << args;
+    };
+    // a test id given twice in the tests file (its second row lost its prediction before)
+    std::string t = text(tests);
+    const std::size_t l2 = t.find('\n') + 1, l3 = t.find('\n', l2) + 1;
+    const fs::path dup = dir()/"dupTests.csv";
+    std::ofstream(dup) << t.substr(0, l3) + t.substr(l2, l3 - l2) + t.substr(l3);
+    expectFail("-tests " + dup.string() + " -model sherritt", {dup.string(), "test 11", "line 3", "also on line 2"});
+    const fs::path frac = dir()/"fracTests.csv";
+    std::ofstream(frac) << t.substr(0, l2) + "11.5" + t.substr(l2 + 2);
+    expectFail("-tests " + frac.string() + " -model sherritt", {frac.string(), "line 2, column test", "'11.5'"});
+
+    // -score: a prediction file that repeats a test, predicts an unknown one, or leaves
+    // a measured one out is refused; -allowMissing scores on the rows given, and says so
+    const fs::path pred = dir()/"sherrittRows.csv";
+    ASSERT_EQ(run("-tests " + tests + " -model sherritt -out " + pred.string()).rc, 0);
+    const std::string p = text(pred);
+    const std::size_t p2 = p.find('\n') + 1, p3 = p.find('\n', p2) + 1;
+    const fs::path twice = dir()/"twice.csv", unknown = dir()/"unknown.csv", fewer = dir()/"fewer.csv";
+    std::ofstream(twice) << p + p.substr(p2, p3 - p2);
+    std::ofstream(unknown) << p + "9999,1.5\n";
+    std::ofstream(fewer) << p.substr(0, p2) + p.substr(p3);
+    const std::string sc = "-score -tests " + tests + " -predictions m=";
+    expectFail(sc + twice.string(), {twice.string(), "line 71", "also on line 2"});
+    expectFail(sc + unknown.string(), {unknown.string(), "test 9999 (line 71)", "not a test of"});
+    expectFail(sc + fewer.string(), {fewer.string(), "no prediction for 1 measured test(s)", "(11)", "-allowMissing"});
+    const fs::path csv = dir()/"fewerScores.csv";
+    const CliRun ok = run(sc + fewer.string() + " -allowMissing -out " + csv.string());
+    ASSERT_EQ(ok.rc, 0) << ok.out;
+    EXPECT_NE(ok.out.find("m predicts 68 of 69 measured tests (-allowMissing)"), std::string::npos) << ok.out;
+    EXPECT_EQ(overallScores(csv).at("m").first, 68);
+    // an option given twice is refused, not the last one taken
+    expectFail("-tests " + tests + " -tests " + tests + " -model sherritt", {"-tests", "given twice"});
+}

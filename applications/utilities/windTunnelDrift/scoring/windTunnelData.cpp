@@ -35,6 +35,24 @@ double toDouble(const std::string& text, const std::string& file, int line, cons
     }
 }
 
+// A test id: a whole number, once per file (`seen`: id -> line of its first row)
+int testId(const std::string& text, const std::string& file, int line, std::map<int, int>& seen)
+{
+    const double v = toDouble(text, file, line, "test");
+    if (!(v == std::floor(v) && std::abs(v) < 1e9))
+    {
+        throw InputError(file, rowEntry(line, "test"), "'" + text + "' is not a whole test number");
+    }
+    const int id = static_cast<int>(v);
+    const auto [it, added] = seen.emplace(id, line);
+    if (!added)
+    {
+        throw InputError(file, "test " + std::to_string(id) + " (" + rowEntry(line, "test") + ")",
+            "given twice: also on line " + std::to_string(it->second) + "; each test once");
+    }
+    return id;
+}
+
 // Run a reader body, turning the CSV library's errors into InputError
 template<class Body>
 auto guarded(const std::filesystem::path& file, Body body) -> decltype(body())
@@ -138,12 +156,13 @@ std::vector<WindTunnelTest> readWindTunnelTests
         in.read_header(io::ignore_extra_column, "test", "material", "air_velocity_m_s",
                        "spill_rate_kg_m_s", "flight_length_m", "fall_height_m");
         std::vector<WindTunnelTest> tests;
+        std::map<int, int> seen;
         std::string id, material, vg, spill, L, y;
         while (in.read_row(id, material, vg, spill, L, y))
         {
             const int line = static_cast<int>(in.get_file_line());
             WindTunnelTest t;
-            t.test = static_cast<int>(toDouble(id, fname, line, "test"));
+            t.test = testId(id, fname, line, seen);
             t.material = material;
             if (!materials.count(material))
             {
@@ -176,7 +195,8 @@ std::map<int, double> readMeasured
 (
     const std::filesystem::path& file,
     const std::string& column,
-    bool emptyIsUnmeasured
+    bool emptyIsUnmeasured,
+    std::map<int, int>* lines
 )
 {
     const std::string fname = file.string();
@@ -185,13 +205,16 @@ std::map<int, double> readMeasured
         io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(fname);
         in.read_header(io::ignore_extra_column, "test", column);
         std::map<int, double> measured;
+        std::map<int, int> seen;
         std::string id, value;
         while (in.read_row(id, value))
         {
             const int line = static_cast<int>(in.get_file_line());
+            const int t = testId(id, fname, line, seen);
             if (value.empty() && emptyIsUnmeasured) continue;   // not measured in this test
-            measured[static_cast<int>(toDouble(id, fname, line, "test"))] = toDouble(value, fname, line, column);
+            measured[t] = toDouble(value, fname, line, column);
         }
+        if (lines) *lines = seen;
         return measured;
     });
 }

@@ -59,7 +59,8 @@ std::map<std::string, WindTunnelMaterial> readWindTunnelMaterials
 );
 
 //- Read test conditions (Table A.2 columns). Checks every material is in
-//  `materials` and every value is in range; never reads mean_advance_m.
+//  `materials`, every value is in range and every test id is a whole number
+//  given once; never reads mean_advance_m.
 std::vector<WindTunnelTest> readWindTunnelTests
 (
     const std::filesystem::path& file,
@@ -69,12 +70,15 @@ std::vector<WindTunnelTest> readWindTunnelTests
 //- One measured quantity per test, for scoring only: the column `column`
 //  (mean_advance_m, or vc_m_s: Sherritt's apparent in-sheet gas velocity,
 //  Eq 141) keyed by test. An empty cell is an error, or, with
-//  emptyIsUnmeasured, a test that did not measure it, left out
+//  emptyIsUnmeasured, a test that did not measure it, left out. A test id
+//  that is not a whole number or appears twice is an error naming both lines;
+//  `lines`, if given, receives each test's line in the file
 std::map<int, double> readMeasured
 (
     const std::filesystem::path& file,
     const std::string& column,
-    bool emptyIsUnmeasured = false
+    bool emptyIsUnmeasured = false,
+    std::map<int, int>* lines = nullptr
 );
 
 //- The measured mean advance per test, for scoring only
