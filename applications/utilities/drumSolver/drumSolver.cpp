@@ -25,11 +25,24 @@ const char* const usage = "Usage: drumSolver -case DIR\n  reads DIR/drumDict (YA
 int parseArguments(int argc, char* argv[], fs::path& caseDir)
 {
     caseDir = ".";
+    bool given = false;
     for (int i = 1; i < argc; ++i)
     {
-        if (std::strcmp(argv[i], "-case") == 0 && i + 1 < argc)
+        if (std::strcmp(argv[i], "-case") == 0)
         {
+            if (i + 1 >= argc)
+            {
+                std::cerr << "drumSolver: -case needs a folder\n" << usage;
+                return 2;
+            }
+            if (given)
+            {
+                std::cerr << "drumSolver: -case given twice ('" << caseDir.string() << "' and '" << argv[i + 1]
+                          << "'): give one case\n" << usage;
+                return 2;
+            }
             caseDir = argv[++i];
+            given = true;
         }
         else if (std::strcmp(argv[i], "-help") == 0 || std::strcmp(argv[i], "--help") == 0)
         {
@@ -74,6 +87,10 @@ int main(int argc, char* argv[])
         drum::ResultsFolder results(caseDir/"results");
         partial = results.path().string();
         target = results.target().string();
+        for (const auto& f : results.cleaned())
+        {
+            drum::say("removed " + f.string() + ", left by a run that was killed");
+        }
         model->run(results.path());
         for (const auto& f : results.commit())
         {

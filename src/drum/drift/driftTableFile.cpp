@@ -114,6 +114,7 @@ const std::string& tunnelDriftColumn()
 DriftTableFile readDriftTableFile(const std::filesystem::path& path)
 {
     const std::string file = path.string();
+    requireReadableFile(file);
     std::ifstream in(path, std::ios::binary);
     if (!std::filesystem::exists(path) || !in)
     {

@@ -68,6 +68,7 @@ const std::vector<std::string>& segmentTableColumns()
 SegmentTable SegmentTable::read(const std::filesystem::path& path, SegmentTableOptions options)
 {
     const std::string file = path.string();
+    requireReadableFile(file);
     std::ifstream in(path);
     if (!in)
     {

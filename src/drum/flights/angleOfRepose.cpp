@@ -68,6 +68,7 @@ double moistureProfile(int i, int n, double wInlet, double wOutlet)
 std::vector<LeeRigExperiment> readLeeRigExperiments(const std::filesystem::path& path)
 {
     std::vector<LeeRigExperiment> out;
+    requireReadableFile(path.string());
     try
     {
         io::CSVReader<12, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(path.string());

@@ -145,6 +145,7 @@ FlightCase parseFlightDictionary(const std::string& text, const std::string& fil
 
 FlightCase readFlightDictionary(const std::filesystem::path& path)
 {
+    requireReadableFile(path.string());
     std::ifstream in(path);
     if (!in)
     {

@@ -2,6 +2,8 @@
 
 #include "drum/io/inputError.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <system_error>
 #include <unistd.h>
 
@@ -14,14 +16,25 @@ AtomicFile::AtomicFile(std::filesystem::path target)
     temp_(target_.parent_path()
         / ("." + target_.filename().string() + ".tmp" + std::to_string(::getpid())))
 {
+    if (std::filesystem::is_directory(target_))
+    {
+        throw std::runtime_error("cannot write " + target_.string() + ": it is a folder, not a file");
+    }
     if (!target_.parent_path().empty())
     {
-        std::filesystem::create_directories(target_.parent_path());
+        std::error_code ec;
+        std::filesystem::create_directories(target_.parent_path(), ec);
+        if (ec)
+        {
+            throw std::runtime_error("cannot write " + target_.string() + ": cannot make its folder ("
+                                     + ec.message() + ")");
+        }
     }
     out_.open(temp_);
     if (!out_)
     {
-        throw std::runtime_error("cannot open " + temp_.string() + " for writing");
+        throw std::runtime_error("cannot write " + target_.string() + ": " + std::strerror(errno)
+                                 + " (folder not writable or disk full?)");
     }
     out_.precision(10);
 }

@@ -1,6 +1,8 @@
 #include "drum/io/inputError.hpp"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace drum
@@ -52,6 +54,24 @@ void requirePositive(double value, const std::string& entry, const std::string& 
         std::ostringstream os;
         os << "value " << value << " must be positive and finite";
         throw InputError(file, entry, os.str());
+    }
+}
+
+void requireReadableFile(const std::string& file, const std::string& entry)
+{
+    std::error_code ec;
+    const auto st = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(st))
+    {
+        throw InputError(file, entry, "file not found");
+    }
+    if (std::filesystem::is_directory(st))
+    {
+        throw InputError(file, entry, "is a folder, not a file");
+    }
+    if (!std::ifstream(file))
+    {
+        throw InputError(file, entry, "cannot be read (permissions?)");
     }
 }
 

@@ -34,6 +34,11 @@ void requireInRange
 //- Throw InputError unless value > 0 and finite
 void requirePositive(double value, const std::string& entry, const std::string& file = "");
 
+//- Throw InputError naming the file (and the entry that named it, if any)
+//  unless `file` is an existing regular file that can be opened for reading:
+//  "not found", "is a folder, not a file" or "cannot be read"
+void requireReadableFile(const std::string& file, const std::string& entry = "");
+
 } // namespace drum
 
 #endif

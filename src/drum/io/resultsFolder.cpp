@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <cerrno>
+#include <csignal>
 #include <system_error>
 #include <unistd.h>
 
@@ -61,6 +63,44 @@ std::set<fs::path> writtenBefore(const fs::path& old, const std::set<fs::path>& 
     return now;
 }
 
+//- Remove the files a run wrote (its manifest `mine`) from a folder, then the
+//  folders left empty: never a file the tool did not write
+void removeWritten(const fs::path& folder, const std::set<fs::path>& mine)
+{
+    std::error_code ec;
+    for (const auto& f : mine) fs::remove(folder/f, ec);
+    std::vector<fs::path> dirs;
+    for (const auto& e : fs::recursive_directory_iterator(folder, ec))
+    {
+        if (e.is_directory()) dirs.push_back(e.path());
+    }
+    std::sort(dirs.begin(), dirs.end(), [](const fs::path& a, const fs::path& b)
+              { return a.string().size() > b.string().size(); });
+    for (const auto& d : dirs) fs::remove(d, ec);
+    fs::remove(folder, ec);
+}
+
+std::set<fs::path> manifestOf(const fs::path& folder)
+{
+    return writtenBefore(folder, {});
+}
+
+//- The pid a hidden folder ".<name><kind><pid>" of `target` belongs to, or -1
+long hiddenPid(const fs::path& entry, const fs::path& target, const std::string& kind)
+{
+    const std::string head = "." + target.filename().string() + kind;
+    const std::string name = entry.filename().string();
+    if (name.size() <= head.size() || name.compare(0, head.size(), head) != 0) return -1;
+    const std::string digits = name.substr(head.size());
+    if (digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 9) return -1;
+    return std::stol(digits);
+}
+
+bool processGone(long pid)
+{
+    return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
 } // namespace
 
 
@@ -74,9 +114,46 @@ ResultsFolder::ResultsFolder(fs::path target)
     {
         throw std::runtime_error(target_.string() + " is a file, not a results folder");
     }
+    // what killed runs left beside the target: a partial folder is removed; a swap
+    // that had begun (the old folder renamed away, the new one not yet in place) is
+    // finished, then the old folder's own files are removed
     std::error_code ec;
+    const fs::path parent = target_.parent_path().empty() ? fs::path(".") : target_.parent_path();
+    std::vector<fs::path> partials, olds;
+    for (const auto& e : fs::directory_iterator(parent, ec))
+    {
+        const long pp = hiddenPid(e.path(), target_, ".partial"), po = hiddenPid(e.path(), target_, ".old");
+        if (pp > 0 && pp != ::getpid() && processGone(pp)) partials.push_back(e.path());
+        if (po > 0 && po != ::getpid() && processGone(po)) olds.push_back(e.path());
+    }
+    for (const auto& p : partials)
+    {
+        const long pid = hiddenPid(p, target_, ".partial");
+        const fs::path old = parent/("." + target_.filename().string() + ".old" + std::to_string(pid));
+        if (!fs::exists(target_) && fs::exists(old) && fs::exists(p/manifestName()))
+        {
+            fs::rename(p, target_, ec);   // the killed run's complete results
+        }
+        else
+        {
+            fs::remove_all(p, ec);
+        }
+        cleaned_.push_back(p);
+    }
+    for (const auto& o : olds)
+    {
+        if (fs::exists(target_))
+        {
+            removeWritten(o, manifestOf(o));
+            cleaned_.push_back(o);
+        }
+    }
     fs::remove_all(partial_, ec);
-    fs::create_directories(partial_);
+    fs::create_directories(partial_, ec);
+    if (ec)
+    {
+        throw std::runtime_error("cannot write the results folder " + target_.string() + ": " + ec.message());
+    }
 }
 
 
@@ -117,18 +194,7 @@ std::vector<fs::path> ResultsFolder::commit()
         fs::rename(target_, trash);
         fs::rename(partial_, target_);
         committed_ = true;
-        std::error_code ec;
-        for (const auto& f : mine) fs::remove(trash/f, ec);
-        // then the folders left empty (never a file this tool did not write)
-        std::vector<fs::path> dirs;
-        for (const auto& e : fs::recursive_directory_iterator(trash, ec))
-        {
-            if (e.is_directory()) dirs.push_back(e.path());
-        }
-        std::sort(dirs.begin(), dirs.end(), [](const fs::path& a, const fs::path& b)
-                  { return a.string().size() > b.string().size(); });
-        for (const auto& d : dirs) fs::remove(d, ec);
-        fs::remove(trash, ec);
+        removeWritten(trash, mine);
     }
     else
     {

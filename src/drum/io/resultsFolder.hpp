@@ -3,7 +3,9 @@
 // of the old folder (those the tool did not write, per the old folder's
 // manifest), swaps the folders with two renames and removes what the
 // previous run wrote. Until commit() the old folder is untouched; a run that
-// fails (or throws) leaves it as it was and removes its partial folder.
+// fails (or throws) leaves it as it was and removes its partial folder; the
+// partial folder of a run that was killed (its process gone) is removed by the
+// next run (a swap it had begun is finished first), so none is left behind.
 #ifndef DRUM_IO_RESULTSFOLDER_HPP
 #define DRUM_IO_RESULTSFOLDER_HPP
 
@@ -33,6 +35,9 @@ public:
     //- Where this run writes its outputs
     const std::filesystem::path& path() const { return partial_; }
 
+    //- The hidden folders of killed runs that this one removed (or finished)
+    const std::vector<std::filesystem::path>& cleaned() const { return cleaned_; }
+
     const std::filesystem::path& target() const { return target_; }
 
     //- Install the outputs as the target folder; returns the user's files
@@ -46,6 +51,7 @@ private:
     std::filesystem::path target_;
     std::filesystem::path partial_;
     bool committed_ = false;
+    std::vector<std::filesystem::path> cleaned_;
 };
 
 } // namespace drum

@@ -91,6 +91,7 @@ YAML::Node loadYamlText(const std::string& text, const std::string& file)
 
 YAML::Node loadYamlFile(const std::string& file)
 {
+    requireReadableFile(file);
     YAML::Node root;
     try
     {

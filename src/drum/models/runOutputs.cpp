@@ -22,6 +22,7 @@ void say(const std::string& s)
 MeasuredTracer readTracer(const TracerFile& tf)
 {
     MeasuredTracer m;
+    requireReadableFile(tf.file.string(), "rtd.tracer.file");
     try
     {
         io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(tf.file.string());

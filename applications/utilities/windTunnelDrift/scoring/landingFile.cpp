@@ -29,6 +29,7 @@ std::map<double, std::vector<ClassLanding>> readLandingFile(const std::filesyste
 {
     const std::string f = file.string();
     if (!std::filesystem::exists(file)) throw InputError(f, "", "curtainCase wrote no landing distribution");
+    requireReadableFile(f);
     // per height and class index: the landing, and whether its slot row was read
     std::map<double, std::map<std::size_t, std::pair<ClassLanding, bool>>> byHeight;
     try

@@ -57,10 +57,7 @@ int testId(const std::string& text, const std::string& file, int line, std::map<
 template<class Body>
 auto guarded(const std::filesystem::path& file, Body body) -> decltype(body())
 {
-    if (!std::filesystem::exists(file))
-    {
-        throw InputError(file.string(), "", "file not found");
-    }
+    requireReadableFile(file.string());
     try
     {
         return body();
