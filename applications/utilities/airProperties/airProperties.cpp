@@ -4,7 +4,9 @@
 // at 6 significant digits. curtainCase -gasTemperature/-gasPressure writes
 // these into a curtain case's constant/transportProperties, so the curtain
 // tables and the drum model use the same air. Exit 2 on bad input, with the
-// allowed range.
+// allowed range. A temperature that looks like one in kelvin (353.15) is
+// warned on stderr (drum/io/unitSlips.hpp), and used as given.
+#include "drum/io/unitSlips.hpp"
 #include "particleDrag/gasProperties.hpp"
 
 #include <cstdio>
@@ -33,8 +35,9 @@ bool readNumber(const char* name, const char* text, double lo, double hi, const 
 
 int main(int argc, char* argv[])
 {
-    const char* usage = "Usage: airProperties -temperature T [-pressure P]   "
-                        "(T degC in [-50, 1500]; P kPa in [10, 1000], default 101.325)\n";
+    const char* usage = "Usage: airProperties -temperature T [-pressure P] [-entry NAME]   "
+                        "(T degC in [-50, 1500]; P kPa in [10, 1000], default 101.325;\n"
+                        "  NAME: the caller's entry, named in a warning)\n";
     if (argc == 2 && (!std::strcmp(argv[1], "-help") || !std::strcmp(argv[1], "-h")))
     {
         std::fputs(usage, stdout);
@@ -42,9 +45,15 @@ int main(int argc, char* argv[])
     }
     double t = 0, p = particleDrag::standardPressureKPa;
     bool haveT = false;
+    std::string entry = "-temperature";
     for (int i = 1; i < argc; i += 2)
     {
         const bool isT = !std::strcmp(argv[i], "-temperature"), isP = !std::strcmp(argv[i], "-pressure");
+        if (!std::strcmp(argv[i], "-entry") && i + 1 < argc)
+        {
+            entry = argv[i + 1];
+            continue;
+        }
         if ((!isT && !isP) || i + 1 >= argc)
         {
             std::fputs(usage, stderr);
@@ -62,6 +71,11 @@ int main(int argc, char* argv[])
     {
         std::fputs(usage, stderr);
         return 2;
+    }
+    // a temperature that looks like kelvin: warned on stderr, used as given
+    if (const auto w = drum::unitSlipWarning("gas.temperature_C", t, entry))
+    {
+        std::fprintf(stderr, "airProperties: warning: %s\n", w->c_str());
     }
     const particleDrag::Gas air = particleDrag::Gas::air(t, p);
     std::printf("rho %.6g\nmu %.6g\nnu %.6g\n", air.density, air.viscosity, air.viscosity/air.density);

@@ -82,6 +82,10 @@ int main(int argc, char* argv[])
     {
         drum::say("reading " + (caseDir/"drumDict").string());
         const drum::DrumCase c = drum::readDrumCase(caseDir, drum::drumModelSections());
+        for (const std::string& w : c.warnings)
+        {
+            drum::say("warning: " + w);
+        }
         const std::unique_ptr<drum::DrumModel> model = drum::DrumModel::New(c);
 
         drum::ResultsFolder results(caseDir/"results");

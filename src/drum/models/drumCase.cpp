@@ -1,4 +1,5 @@
 #include "drum/models/drumCase.hpp"
+#include "drum/io/unitSlips.hpp"
 
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
@@ -258,6 +259,7 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
             throw InputError(file, "rtd.tracer.file", "missing: path of the measured tracer CSV");
         }
         TracerFile tf;
+        tf.dict = file;
         tf.file = expandPath(t["file"].as<std::string>(), caseDir, file, "rtd.tracer.file");
         if (!std::filesystem::exists(tf.file))
         {
@@ -271,6 +273,16 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
         tf.eScale = eu == "per_s" ? 1.0 : eu == "per_min" ? 1.0/60.0 : 1.0/3600.0;
         c.tracer = tf;
     }
+    // legal values that look like another unit: warned, used as given
+    const auto suspect = [&](const std::string& entry, double v)
+    {
+        if (const auto w = unitSlipWarning(entry, v)) c.warnings.push_back(file + ": " + *w);
+    };
+    suspect("drum.speed_rpm", c.drum.speedRpm);
+    suspect("material.bulkDensity", c.material.bulkDensity);
+    if (m["particleDensity"]) suspect("material.particleDensity", c.material.particleDensity);
+    for (const double d : c.material.sizes) suspect("material.sizes_um", d*1e6);
+    if (g["temperature_C"]) suspect("gas.temperature_C", c.gas.temperatureC);
     return c;
 }
 

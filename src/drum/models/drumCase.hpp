@@ -66,6 +66,7 @@ struct CaseGas
 
 struct TracerFile
 {
+    std::filesystem::path dict;     //!< the drumDict whose rtd.tracer names it
     std::filesystem::path file;
     std::string timeColumn;
     double timeScale = 1;       //!< to seconds
@@ -84,6 +85,8 @@ struct DrumCase
     CaseGas gas;
     RtdOptions rtd;
     std::optional<TracerFile> tracer;
+    //- Legal values that look like a unit mix-up (unitSlips.hpp), with the file
+    std::vector<std::string> warnings;
 
     DictReader reader() const { return DictReader(path.string()); }
 };

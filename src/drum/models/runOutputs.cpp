@@ -4,9 +4,12 @@
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
 
+#include <algorithm>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -23,6 +26,30 @@ MeasuredTracer readTracer(const TracerFile& tf)
 {
     MeasuredTracer m;
     requireReadableFile(tf.file.string(), "rtd.tracer.file");
+    {
+        // the columns drumDict names must be in the CSV's header: say which entry to fix
+        std::ifstream in(tf.file);
+        std::string header, cell;
+        std::getline(in, header);
+        std::vector<std::string> names;
+        std::istringstream cells(header);
+        while (std::getline(cells, cell, ','))
+        {
+            const auto a = cell.find_first_not_of(" \t\r\""), b = cell.find_last_not_of(" \t\r\"");
+            names.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+        }
+        for (const auto& [entry, column] : {std::pair<std::string, std::string>{"rtd.tracer.timeColumn", tf.timeColumn},
+                                            {"rtd.tracer.EColumn", tf.eColumn}})
+        {
+            if (std::find(names.begin(), names.end(), column) == names.end())
+            {
+                std::string list;
+                for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+                throw InputError(tf.dict.string(), entry, "column '" + column + "' is not in the header of "
+                    + tf.file.string() + " (its columns: " + list + ")");
+            }
+        }
+    }
     try
     {
         io::CSVReader<2, io::trim_chars<' '>, io::double_quote_escape<',', '"'>> in(tf.file.string());

@@ -87,8 +87,10 @@ CompartmentSettings readSettings(const DrumCase& c)
             == "resolved";
     }
     // kilnTime: Lee's t_kiln, or saeman: the kilning bed from physics (no kiln time to give or fit)
-    s.saemanKiln = r.numberOrWord(mo, "model", "kilnTime", 0, 1e300, {"saeman"},
-        "a time in s, range (0, 1e+300], or saeman (the rolling bed of Sherritt 1991 Eq 22)",
+    // (at most 1e5 s, a day per slice: a kiln that slow holds the tracer for longer than
+    // any tracer run can follow, and the run could not reach its recovery)
+    s.saemanKiln = r.numberOrWord(mo, "model", "kilnTime", 0, 1e5, {"saeman"},
+        "a time in s, range (0, 1e5], or saeman (the rolling bed of Sherritt 1991 Eq 22)",
         s.lee.kilnTime, 9.28, true) == "saeman";
     if (s.saemanKiln)
     {
