@@ -19,6 +19,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -84,6 +85,7 @@ Options parse(int argc, char* argv[])
 {
     Options o;
     bool haveLength = false;
+    std::set<std::string> given;
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
@@ -91,6 +93,10 @@ Options parse(int argc, char* argv[])
         {
             std::cout << usageText;
             std::exit(0);
+        }
+        if (!given.insert(a).second)
+        {
+            throw drum::InputError("", a, "given twice: give it once");
         }
         if (i + 1 >= argc)
         {

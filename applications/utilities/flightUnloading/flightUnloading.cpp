@@ -148,11 +148,18 @@ int main(int argc, char** argv)
 {
     fs::path dict;
     fs::path out = "flightUnloading";
+    bool haveDict = false, haveOut = false;
     for (int i = 1; i < argc; ++i)
     {
         const std::string a = argv[i];
+        if ((a == "-dict" && haveDict) || (a == "-out" && haveOut))
+        {
+            std::cerr << "flightUnloading: option " << a << " given twice: give it once\n";
+            return 2;
+        }
         if ((a == "-dict" || a == "-out") && i + 1 < argc)
         {
+            (a == "-dict" ? haveDict : haveOut) = true;
             (a == "-dict" ? dict : out) = argv[++i];
         }
         else if (a == "-help" || a == "--help" || a == "-h")
