@@ -138,7 +138,7 @@ TEST(SegmentTable, BadFilesNameTheFileAndTheLine)
     expectInputError(write("grid.csv", header + rows({40}, {1}, psis, linear) + rows({50}, {2}, psis, linear)),
                      "every repose angle needs a run at every gas velocity");
     expectInputError(write("empty.csv", header), "no curtains");
-    expectInputError(tmpDir()/"absent.csv", "cannot open");
+    expectInputError(tmpDir()/"absent.csv", "file not found");
 }
 
 TEST(SegmentVcDrift, IsTheLoneParticleAtTheSegmentsVc)
