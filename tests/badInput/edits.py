@@ -28,39 +28,41 @@ def _yaml_line(lines, entry):
     return found
 
 
-def yaml_set(text, entry, value):
-    """Entry's value replaced (its comment kept out)."""
+def _edit(text, find, entry, change):
+    """`change(lines, i, key)` applied at the line `find(lines, entry)` locates."""
     lines = text.split("\n")
-    i = _yaml_line(lines, entry)
-    key = entry.split(".")[-1]
-    indent = lines[i][:len(lines[i]) - len(lines[i].lstrip())]
-    lines[i] = "%s%s: %s" % (indent, key, value)
+    i = find(lines, entry)
+    change(lines, i, re.split(r"[./]", entry)[-1])
     return "\n".join(lines)
+
+
+def _indent(line):
+    return line[:len(line) - len(line.lstrip())]
+
+
+def yaml_set(text, entry, value):
+    """Entry's value replaced (its comment left out)."""
+    def change(lines, i, key):
+        lines[i] = "%s%s: %s" % (_indent(lines[i]), key, value)
+    return _edit(text, _yaml_line, entry, change)
 
 
 def yaml_rename(text, entry, new_key):
-    lines = text.split("\n")
-    i = _yaml_line(lines, entry)
-    key = entry.split(".")[-1]
-    lines[i] = lines[i].replace(key + ":", new_key + ":", 1)
-    return "\n".join(lines)
+    def change(lines, i, key):
+        lines[i] = lines[i].replace(key + ":", new_key + ":", 1)
+    return _edit(text, _yaml_line, entry, change)
 
 
 def yaml_duplicate(text, entry):
-    lines = text.split("\n")
-    i = _yaml_line(lines, entry)
-    lines.insert(i + 1, lines[i])
-    return "\n".join(lines)
+    return _edit(text, _yaml_line, entry, lambda lines, i, key: lines.insert(i + 1, lines[i]))
 
 
 def yaml_remove(text, entry):
-    lines = text.split("\n")
-    i = _yaml_line(lines, entry)
-    del lines[i]
-    return "\n".join(lines)
+    return _edit(text, _yaml_line, entry, lambda lines, i, key: lines.pop(i))
 
 
 def _foam_line(lines, entry):
+    """Index of the line holding OpenFOAM entry key or sub/key."""
     parts = entry.split("/")
     start = 0
     for d, key in enumerate(parts):
@@ -75,34 +77,23 @@ def _foam_line(lines, entry):
 
 
 def foam_set(text, entry, value):
-    lines = text.split("\n")
-    i = _foam_line(lines, entry)
-    key = entry.split("/")[-1]
-    indent = lines[i][:len(lines[i]) - len(lines[i].lstrip())]
-    lines[i] = "%s%s %s;" % (indent, key, value)
-    return "\n".join(lines)
+    def change(lines, i, key):
+        lines[i] = "%s%s %s;" % (_indent(lines[i]), key, value)
+    return _edit(text, _foam_line, entry, change)
 
 
 def foam_rename(text, entry, new_key):
-    lines = text.split("\n")
-    i = _foam_line(lines, entry)
-    key = entry.split("/")[-1]
-    lines[i] = lines[i].replace(key, new_key, 1)
-    return "\n".join(lines)
+    def change(lines, i, key):
+        lines[i] = lines[i].replace(key, new_key, 1)
+    return _edit(text, _foam_line, entry, change)
 
 
 def foam_duplicate(text, entry):
-    lines = text.split("\n")
-    i = _foam_line(lines, entry)
-    lines.insert(i + 1, lines[i])
-    return "\n".join(lines)
+    return _edit(text, _foam_line, entry, lambda lines, i, key: lines.insert(i + 1, lines[i]))
 
 
 def foam_remove(text, entry):
-    lines = text.split("\n")
-    i = _foam_line(lines, entry)
-    del lines[i]
-    return "\n".join(lines)
+    return _edit(text, _foam_line, entry, lambda lines, i, key: lines.pop(i))
 
 
 def csv_set(text, row, column, value):
