@@ -24,7 +24,15 @@ rm -rf "$work"; mkdir -p "$work"
 # value of a column (by header name) in row 2 of a CSV
 col() { awk -F, -v c="$2" 'NR==1{for(i=1;i<=NF;i++) if($i==c) k=i} NR==2{ if(!k) exit 1; print $k }' "$1"; }
 # awk test: check "<expression>" "<message>" var=value...
-check() { expr="$1"; msg="$2"; shift 2; awk "$@" "BEGIN{ exit !($expr) }" || fail "$msg ($*)"; }
+# (every value a finite number: mawk takes NaN as equal to anything)
+. "$(dirname "$0")/../../foam/testFunctions"
+check() {
+    expr="$1"; msg="$2"; shift 2
+    for a in "$@"; do
+        case "$a" in -v) ;; *=*) isFiniteNumber "${a#*=}" || fail "$msg: ${a%%=*} = '${a#*=}' is not a finite number" ;; esac
+    done
+    awk "$@" "BEGIN{ exit !($expr) }" || fail "$msg ($*)"
+}
 
 runcase() {  # runcase NAME SOURCE_DRUM [sed expression]
     mkdir -p "$work/$1"
