@@ -253,7 +253,7 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
     if (rr["tracer"])
     {
         const YAML::Node t = rr["tracer"];
-        r.only(t, "rtd.tracer", {"file", "timeColumn", "timeUnit", "EColumn", "EUnit"});
+        r.only(t, "rtd.tracer", {"file", "timeColumn", "timeUnit", "EColumn", "EUnit", "bodyEnd"});
         if (!t["file"])
         {
             throw InputError(file, "rtd.tracer.file", "missing: path of the measured tracer CSV");
@@ -271,6 +271,7 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
         tf.eColumn = t["EColumn"] ? t["EColumn"].as<std::string>() : "E_per_s";
         const std::string eu = r.word(t, "rtd.tracer", "EUnit", {"per_s", "per_min", "per_h"}, std::string("per_s"));
         tf.eScale = eu == "per_s" ? 1.0 : eu == "per_min" ? 1.0/60.0 : 1.0/3600.0;
+        tf.bodyEnd = r.number(t, "rtd.tracer", "bodyEnd", 0, 1e6, 0.0, true);
         c.tracer = tf;
     }
     // legal values that look like another unit: warned, used as given

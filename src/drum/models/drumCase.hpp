@@ -72,6 +72,9 @@ struct TracerFile
     double timeScale = 1;       //!< to seconds
     std::string eColumn;
     double eScale = 1;          //!< to 1/s
+    //- s: the end of the curve's body in the comparison with the model (0: the
+    //  measured curve's t95, the time by which 95 % of it came out)
+    double bodyEnd = 0;
 };
 
 struct DrumCase

@@ -1,14 +1,18 @@
 #include "drum/models/runOutputs.hpp"
 
 #include "drum/io/csv.hpp"
+#include "drum/io/atomicFile.hpp"
 #include "drum/io/csvWriter.hpp"
 #include "drum/io/inputError.hpp"
+#include "drum/rtd/rtdShape.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -180,6 +184,45 @@ void writeRtdOutputs
         se = keep;
     }
     plotIfPossible(lg, out/"rtd_log.png");
+    if (measured)
+    {
+        writeTracerComparison(*c.tracer, time, E, *measured, out);
+    }
+}
+
+
+void writeTracerComparison
+(
+    const TracerFile& tf,
+    const std::vector<double>& time,
+    const std::vector<double>& E,
+    const MeasuredTracer& measured,
+    const fs::path& out
+)
+{
+    // the body ends where the drumDict says, else where 95 % of the measured tracer is out
+    const double cut = tf.bodyEnd > 0 ? tf.bodyEnd : rtdQuantile(measured.t, measured.E, 0.95);
+    const RtdShape m = rtdShape(time, E, cut), x = rtdShape(measured.t, measured.E, cut);
+    std::ostringstream csv;
+    csv << std::setprecision(10) << "quantity,model,measured,model_over_measured,within_goal\n";
+    std::ostringstream line;
+    line << std::setprecision(3) << "against the tracer (body to " << cut/60 << " min; goal within "
+         << 100*tracerGoal << " %):";
+    const std::vector<std::tuple<std::string, double, double>> rows{
+        {"t10_s", m.t10, x.t10}, {"t50_s", m.t50, x.t50}, {"t90_s", m.t90, x.t90},
+        {"body_mean_s", m.bodyMean, x.bodyMean}, {"body_std_s", m.bodySd, x.bodySd},
+        {"tail_share", m.tailShare, x.tailShare}};
+    for (const auto& [name, a, b] : rows)
+    {
+        const double r = a/b;
+        const bool ok = std::abs(r - 1) <= tracerGoal;
+        csv << name << ',' << a << ',' << b << ',' << r << ',' << (ok ? "yes" : "no") << '\n';
+        const bool share = name == "tail_share";
+        line << ' ' << name.substr(0, name.rfind('_')) << ' ' << (share ? a : a/60) << '/' << (share ? b : b/60)
+             << (ok ? "" : " (off)");
+    }
+    writeFileAtomically(out/"tracerComparison.csv", csv.str());
+    say(line.str() + " (times in min; tracerComparison.csv)");
 }
 
 } // namespace drum

@@ -30,6 +30,19 @@ struct MeasuredTracer
 //- The tracer file's two columns in s and 1/s; InputError naming the file
 MeasuredTracer readTracer(const TracerFile& tf);
 
+//- The comparison with the tracer's shape (rtd/rtdShape.hpp): t10, t50, t90,
+//  the body's mean and SD and the tail's share, model and measured, each
+//  against the goal (within tracerGoal of the measured); tracerComparison.csv
+constexpr double tracerGoal = 0.05;
+void writeTracerComparison
+(
+    const TracerFile& tf,
+    const std::vector<double>& time,
+    const std::vector<double>& E,
+    const MeasuredTracer& measured,
+    const std::filesystem::path& out
+);
+
 //- The case's tracer, if it names one
 std::optional<MeasuredTracer> readTracer(const DrumCase& c);
 

@@ -3,9 +3,13 @@
 # copy anywhere (its table and tracer are named through $DRYER_PROJECT and
 # $DRYER_DATA), the bed-filled flights settle with the bed, every size class
 # passes and the finer classes stay longer (the counter-current gas holds them
-# back), the mixture's mean is its holdup over the feed, and the case's
-# headline (mean short of the measured 11.08 min by less than 15 %, SD well
-# short of the measured 6.73 min, as its README says) holds.
+# back), the mixture's mean is its holdup over the feed plus half the pulse,
+# and the RTD is compared with the tracer, not with an earlier result: t10,
+# t50, t90, the mean and SD of the body before 20 min and the share after it,
+# model against measured, each against the goal (within 5 %). The tracer's own
+# figures (body 9.92 / 2.46 min, 4.5 % after 20 min, from data/invicta_rtd.csv)
+# must come out; the model's are reported with where they miss the goal, never
+# pinned to today's shortfall.
 # Usage: invictaPhysics.sh DRUMSOLVER CASE_DIR WORK_DIR
 set -u
 solver="$1"; src="$2"; work="$3"
@@ -23,8 +27,23 @@ awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i } NR > 1 { n++; t[n] = $(c[
 # the 39.6 s pulse shifts the tracer mean by half its length
 awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i }
     NR==2 { m = $(c["exact_mean_s"]); h = $(c["holdup_over_feed_s"]); mm = $(c["measured_mean_s"]); s = $(c["exact_std_s"]); ms = $(c["measured_std_s"])
-            if (!((m - h - 19.8)^2 < 1e-6)) { print "mean " m " vs holdup/feed + pulse/2 " h + 19.8; exit 1 }
-            if (!(m > 0.85*mm && m < mm)) { print "mean " m " s, measured " mm " s"; exit 1 }
-            if (!(s < 0.5*ms)) { print "SD " s " s, measured " ms " s"; exit 1 } }' \
+            if (!((m - h - 19.8)^2 < 1e-6)) { print "mean " m " vs holdup/feed + pulse/2 " h + 19.8; exit 1 } }' \
     "$work/results/summary.csv" || fail "physics case summary"
+# against the tracer: the measured side is the tracer's own (its trapezoids on its samples)
+cmp="$work/results/tracerComparison.csv"
+[ -s "$cmp" ] || fail "no tracerComparison.csv"
+. "$(dirname "$0")/../../foam/testFunctions"
+value() { awk -F, -v q="$1" -v c="$2" 'NR==1 { for (i = 1; i <= NF; ++i) k[$i] = i } $1 == q { print $k[c] }' "$cmp"; }
+checkClose "measured body mean [min]" "$(calc "v/60" v="$(value body_mean_s measured)")" 9.915 0.005
+checkClose "measured body SD [min]" "$(calc "v/60" v="$(value body_std_s measured)")" 2.459 0.005
+checkClose "measured share after 20 min" "$(value tail_share measured)" 0.0448 0.0005
+checkClose "measured t50 [min]" "$(calc "v/60" v="$(value t50_s measured)")" 9.66 0.01
+n=0
+for q in t10_s t50_s t90_s body_mean_s body_std_s tail_share; do
+    a=$(value $q model); b=$(value $q measured); r=$(value $q model_over_measured); ok=$(value $q within_goal)
+    checkExpr "a >= 0 && b > 0 && (r - a/b)^2 < 1e-12" "$q: model $a, measured $b, ratio $r" a="$a" b="$b" r="$r"
+    case "$ok" in yes) ;; no) n=$((n + 1)) ;; *) fail "$q: within_goal '$ok'" ;; esac
+    echo "   $q: model $a, measured $b, model/measured $r, within 5 %: $ok"
+done
+echo "Invicta physics case against the tracer: $n of 6 quantities outside the goal (reported, not pinned)"
 echo "Invicta physics case: all checks passed"
