@@ -84,7 +84,7 @@ const char* usage =
     "               [-pngModels NAME,...] [-byMaterial FILE.csv] [-quantity advance|apparentVc] [-allowMissing]\n"
     "  windTunnelDrift -sizeClasses MATERIAL [-materials FILE] [-sieveBottom UM]\n"
     "  windTunnelDrift -tunnelReading LANDING.csv -out READING.csv\n"
-    "models: isolated, sherritt, table, tableVc, porousSheet, cfd\n";
+    "models: isolated, isolatedFullDrag, sherritt, table, tableVc, porousSheet, cfd\n";
 
 struct Args
 {

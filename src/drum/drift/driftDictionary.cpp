@@ -20,7 +20,7 @@ namespace drum
 
 const std::vector<std::string>& driftModelNames()
 {
-    static const std::vector<std::string> names{"isolated", "sherritt", "table", "tableVc", "porousSheet", "auto", "segmentVc"};
+    static const std::vector<std::string> names{"isolated", "isolatedFullDrag", "sherritt", "table", "tableVc", "porousSheet", "auto", "segmentVc"};
     return names;
 }
 
@@ -190,6 +190,7 @@ std::shared_ptr<const DriftModel> makeDriftModel
 )
 {
     if (s.model == "isolated") return std::make_shared<IsolatedParticleDrift>(gas, law);
+    if (s.model == "isolatedFullDrag") return std::make_shared<FullDragParticleDrift>(gas, law);
     if (s.model == "sherritt") return std::make_shared<SherrittSheetDrift>(gas, law);
     if (s.model == "table" || s.model == "tableVc")
     {

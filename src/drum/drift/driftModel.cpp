@@ -49,6 +49,17 @@ double IsolatedParticleDrift::displacement(const DriftQuery& q) const
 }
 
 
+double FullDragParticleDrift::displacement(const DriftQuery& q) const
+{
+    check(q);
+    const particleDrag::Particle p{q.particleDiameter, q.particleDensity};
+    particleDrag::FallIntegration o;
+    o.constantK = false;      // Cd from the instantaneous slip
+    o.verticalDrag = true;    // the fall slowed by drag (not Eq 19)
+    return particleDrag::integrateFall(law_, p, gas_, q.gasVelocity, q.fallHeight, q.incline, o).advance;
+}
+
+
 double SherrittSheetDrift::displacement(const DriftQuery& q) const
 {
     check(q);

@@ -69,6 +69,20 @@ protected:
     particleDrag::DragLaw law_;
 };
 
+//- Lone particle in the mean gas velocity with drag on the full slip vector:
+//  Eq 12 with its vertical counterpart integrated from rest (RK4,
+//  particleDrag::integrateFall), Cd re-evaluated from the instantaneous slip:
+//  the fall speed joins the slip the horizontal drag acts on (K |w| w_x, not
+//  K V_g^2), and drag makes the fall last longer than Eq 19's drag-free time.
+//  Sherritt's Eq 17 (isolated) neglects both; this model says how much it matters.
+class FullDragParticleDrift : public IsolatedParticleDrift
+{
+public:
+    using IsolatedParticleDrift::IsolatedParticleDrift;
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return "isolatedFullDrag"; }
+};
+
 //- Lone particle in the sheet gas velocity V_c = C_V V_g, C_V from Eq 142
 //  with the code's exponents and the cap at 1 (sheetgasvel())
 class SherrittSheetDrift : public IsolatedParticleDrift

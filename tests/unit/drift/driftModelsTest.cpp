@@ -303,3 +303,33 @@ TEST(DriftDictionary, RefusesATableSweptInAnotherGas)
     const auto none = readDriftSettings(YAML::Load("model: {drift: table}\ndrift: {table: noGas.csv}\n"), "drumDict", dir);
     EXPECT_NO_THROW(makeDriftModel(none, particleDrag::Gas::air(80)));
 }
+
+TEST(FullDragParticleDrift, TheFallSpeedJoinsTheSlipAndDragSlowsTheFall)
+{
+    const particleDrag::Gas air = particleDrag::Gas::air(20);
+    const auto full = drum::makeDriftModel("isolatedFullDrag", air);
+    const auto eq17 = drum::makeDriftModel("isolated", air);
+    EXPECT_EQ(full->name(), "isolatedFullDrag");
+    drum::DriftQuery q;
+    q.gasVelocity = 3;
+    q.fallHeight = 10.3;
+    q.spillRate = 10;
+    q.flightLength = 1;
+    // a 1 mm shale grain: drag slows its 10 m fall well below the drag-free speed
+    q.particleDiameter = 1e-3;
+    q.particleDensity = 1200;
+    const double a = full->displacement(q), b = eq17->displacement(q);
+    EXPECT_GT(a, 1.5*b) << a << " " << b;
+    // a 20 mm steel ball hardly feels the vertical drag, but its fall speed joins the
+    // slip: the horizontal drag K |w| w_x exceeds Eq 17's K V_g^2 by up to |w|/V_g,
+    // with |w| <= V_g + g t over the drag-free time t of Eq 19
+    q.particleDiameter = 20e-3;
+    q.particleDensity = 7800;
+    const double t = particleDrag::fallTime(q.fallHeight);
+    const double r = full->displacement(q)/eq17->displacement(q);
+    EXPECT_GT(r, 1.0);
+    EXPECT_LT(r, 1 + 9.81*t/q.gasVelocity);
+    // still gas on a level floor: no drift
+    q.gasVelocity = 0;
+    EXPECT_EQ(full->displacement(q), 0.0);
+}
