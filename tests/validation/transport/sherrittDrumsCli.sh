@@ -63,7 +63,7 @@ for d in sheikh kelly odonnell saeman kamke; do
     Fend=$(tail -1 "$r/rtd.csv" | cut -d, -f3)
     check "(Fend - rec)^2 < 2e-3^2" "$d: F_cumulative does not end at the recovery" -v Fend="$Fend" -v rec="$rec"
     # per class: network holdup/feed = Eq 139 within 2 %
-    awk -F, 'NR>1 && $2 > 0 { d = $5/$4 - 1; if (d*d > 0.02^2) { print "class " $1 " um: network " $5 " s, Eq 139 " $4 " s"; bad = 1 } } END { exit bad }' \
+    awk -F, 'NR>1 && $2 > 0 { d = $5/$4 - 1; if (!(d*d < 0.02^2)) { print "class " $1 " um: network " $5 " s, Eq 139 " $4 " s"; bad = 1 } } END { exit bad }' \
         "$r/classes.csv" || fail "$d: per-class network mean off Eq 139"
     [ "$(ls "$r" | grep -c '\.tmp')" = 0 ] || fail "$d: temporary files left"
     echo "$d: holdup $H kg, airborne $(col "$s" airborne_fraction), T $T s, RTD SD $sd s"
@@ -95,7 +95,7 @@ runcase sheikh12 sheikh 's/speed_rpm: 5.7/speed_rpm: 12/'
 awk -F, 'NR>1 && $1 > 180 {print $1 "," $6/($7+$8)}' "$sw" | sort > "$work/h5.csv"
 awk -F, 'NR>1 && $1 > 180 {print $1 "," $6/($7+$8)}' "$work/sheikh12/results/sweep.csv" | sort > "$work/h12.csv"
 join -t, "$work/h5.csv" "$work/h12.csv" \
-    | awk -F, '{ n++; r = $3/$2/(12/5.7) - 1; if (r*r > 1e-6) bad = 1 } END { exit bad || n < 100 }' \
+    | awk -F, '{ n++; r = $3/$2/(12/5.7) - 1; if (!(r*r < 1e-6)) bad = 1 } END { exit bad || n < 100 }' \
     || fail "Sheikh: H_1/H_2 does not scale with the speed"
 # Overload (theta_i < pi) and buried flights (theta_i <= phi + pi/2): the
 # sweep goes on below the flights' pocket range (it used to end at ~137 deg,
