@@ -16,9 +16,16 @@ namespace drum
 namespace
 {
 
-const std::array<std::string, driftAxisCount> axisNames{{
-    "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m",
-    "flight_length_m", "particle_density_kg_m3", "particle_diameter_m"}};
+// the axes' names are the file format's columns after `case` (driftTableFile: their one home)
+const std::array<std::string, driftAxisCount> axisNames = []
+{
+    std::array<std::string, driftAxisCount> names;
+    for (int a = 0; a < driftAxisCount; ++a)
+    {
+        names[a] = driftTableColumns().at(1 + a);
+    }
+    return names;
+}();
 
 using namespace driftTableParse;
 
@@ -101,8 +108,12 @@ DriftTable DriftTable::fromFile(const DriftTableFile& f, const std::filesystem::
             const auto it = std::find(axisNames.begin(), axisNames.end(), w);
             if (it == axisNames.end())
             {
-                throw InputError(file, "header axes", "unknown axis '" + w + "'; the axes are gas_velocity_m_s "
-                    "spill_rate_kg_m_s fall_height_m flight_length_m particle_density_kg_m3 particle_diameter_m");
+                std::string all;
+                for (const auto& n : axisNames)
+                {
+                    all += " " + n;
+                }
+                throw InputError(file, "header axes", "unknown axis '" + w + "'; the axes are" + all);
             }
             const int a = int(it - axisNames.begin());
             if (a <= last)

@@ -17,9 +17,15 @@ namespace
 
 using namespace driftTableParse;
 
-const std::vector<std::string> columns{
-    "case", "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m", "flight_length_m",
-    "particle_density_kg_m3", "particle_diameter_m", "vc_over_vg", "drift_m", "captured_fraction"};
+// the format's columns, their one home (a function-local static: safe to read
+// from another file's static initialisation, driftTable.cpp's axis names)
+const std::vector<std::string>& columnNames()
+{
+    static const std::vector<std::string> names{
+        "case", "gas_velocity_m_s", "spill_rate_kg_m_s", "fall_height_m", "flight_length_m",
+        "particle_density_kg_m3", "particle_diameter_m", "vc_over_vg", "drift_m", "captured_fraction"};
+    return names;
+}
 
 const std::string tunnelColumn = "tunnel_drift_m";
 
@@ -101,7 +107,7 @@ std::optional<std::string> fixedSetting(const std::map<std::string, std::string>
 
 const std::vector<std::string>& driftTableColumns()
 {
-    return columns;
+    return columnNames();
 }
 
 
@@ -113,6 +119,7 @@ const std::string& tunnelDriftColumn()
 
 DriftTableFile readDriftTableFile(const std::filesystem::path& path)
 {
+    const auto& columns = columnNames();
     const std::string file = path.string();
     requireReadableFile(file);
     std::ifstream in(path, std::ios::binary);
@@ -245,6 +252,7 @@ DriftTableFile readDriftTableFile(const std::filesystem::path& path)
 
 std::string driftTableText(const DriftTableFile& table)
 {
+    const auto& columns = columnNames();
     std::string s = "# dryerDriftTable 1\n";
     for (const auto& kv : table.header)
     {

@@ -2,6 +2,7 @@
 
 #include "drum/drift/driftTableFile.hpp"
 #include "drum/io/inputError.hpp"
+#include "particleDrag/releaseLayer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -165,7 +166,7 @@ SegmentTable SegmentTable::read(const std::filesystem::path& path, SegmentTableO
         r.phi = num(0, 0, 90, true);
         r.vg = num(1, 0, 50, true);
         r.c.releaseAngleDeg = num(2, 0, 360, false);
-        r.c.spillRate = num(3, 0, 1000, true);
+        r.c.spillRate = num(3, 0, particleDrag::maxSpillRate, true);
         r.c.fallHeight = num(4, 0, 50, true);
         r.c.vcOverVg = num(5, -2, 2, false);
         r.c.drift = num(6, -100, 100, false);

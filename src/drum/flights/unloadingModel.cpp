@@ -2,6 +2,7 @@
 #include "drum/numerics/constants.hpp"
 
 #include "drum/io/inputError.hpp"
+#include "particleDrag/releaseLayer.hpp"
 
 #include <cmath>
 
@@ -88,7 +89,8 @@ ReleaseConditions UnloadingModel::at(double psiDeg) const
     r.fallTime = std::sqrt(2.0*r.fallHeight/settings_.gravity);   // Eq 3.6
     r.layerVelocity = settings_.layerVelocity;
     // Lee 2008 Eq 5.4 per metre of flight: dM/dt = rho_bl h v
-    r.layerThickness = r.spillRate/(settings_.layerBulkDensity*settings_.layerVelocity);
+    r.layerThickness = particleDrag::releaseLayerThickness(r.spillRate, settings_.layerBulkDensity,
+                                                           settings_.layerVelocity);
     return r;
 }
 

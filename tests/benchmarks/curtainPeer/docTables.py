@@ -2,7 +2,7 @@
 docs/performance.md, written from results/curtainPeer.csv (docs/figures -update
 calls it). Ratios are the peer's over curtainFoam's, both to a drift steady to 1 %."""
 
-import docFigures as df
+from flightedDryer import docFigures as df
 
 PEER = "tests/benchmarks/curtainPeer/results/curtainPeer.csv"
 

@@ -2,7 +2,7 @@
 README, written from the physics case's results (docs/figures -update calls
 them). Each function takes a docFigures.Results and returns Markdown."""
 
-import docFigures as df
+from flightedDryer import docFigures as df
 
 CASE = "cases/invictaDryer/physics"
 TRACER = CASE + "/results/tracerComparison.csv"

@@ -10,7 +10,7 @@ label from routes.csv (how its inputs were chosen).
 import math
 import os
 
-import docFigures as df
+from flightedDryer import docFigures as df
 
 HERE = "tests/validation/windTunnelDrift"
 RES = HERE + "/results"

@@ -5,6 +5,7 @@
 #include "curtainInletFvPatchScalarField.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
+#include "particleDrag/releaseLayer.hpp"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -37,7 +38,7 @@ Foam::scalar readInRange
 
 void Foam::curtainInletFvPatchScalarField::readEntries(const dictionary& dict)
 {
-    spillRate_ = readInRange(dict, "spillRate", 0, 1000, "kg/(m s)");
+    spillRate_ = readInRange(dict, "spillRate", 0, particleDrag::maxSpillRate, "kg/(m s)");
     thickness_ = readInRange(dict, "thickness", 0, 1, "m");
     rhoParticle_ = readInRange(dict, "rhoParticle", 0, 1e5, "kg/m3");
     alphaMax_ = dict.getOrDefault<scalar>("alphaMax", 0.62);
@@ -336,6 +337,7 @@ void Foam::curtainInletFvPatchScalarField::updateCoeffs()
     }
 
     const scalar x = classMassFraction();
+    // S/(rho_p b v) per face (particleDrag::slotSolidsFraction, in this order of operations)
     const scalarField alpha(x*spillRate_/(rhoParticle_*thickness_*Un));
 
     const scalar aMax = gMax(alpha);

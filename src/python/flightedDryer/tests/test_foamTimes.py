@@ -1,24 +1,11 @@
-"""curtainCase resumes only from a time folder curtainFoam marked whole, with no
-file cut short; later (partial) times are removed before the rerun."""
+"""A run resumes only from a time folder curtainFoam marked whole, with no file
+cut short; later (partial) times are removed before the rerun (foamTimes)."""
 
-import importlib.machinery
-import importlib.util
 import os
 
-import pytest
+from flightedDryer import foamTimes as ft
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
 END = b"\n\n// ************************************************************************* //\n"
-
-
-@pytest.fixture(scope="module")
-def cc():
-    path = os.path.join(ROOT, "applications", "utilities", "curtainCase", "curtainCase")
-    loader = importlib.machinery.SourceFileLoader("curtainCase", path)
-    spec = importlib.util.spec_from_loader("curtainCase", loader)
-    mod = importlib.util.module_from_spec(spec)
-    loader.exec_module(mod)
-    return mod
 
 
 def write_time(root, t, mark=True, cut=None, drop=None):
@@ -36,29 +23,27 @@ def write_time(root, t, mark=True, cut=None, drop=None):
 
 
 def cc_mark():
-    return os.path.join("uniform", "curtainFoam.written")
+    return ft.WRITTEN_MARK
 
 
-def test_only_marked_whole_times_count(cc, tmp_path):
+def test_only_marked_whole_times_count(tmp_path):
     case = str(tmp_path)
     os.makedirs(os.path.join(case, "0"))
-    s = {"np": 1}
-    assert cc.latest_time(s, case) is None
+    assert ft.latest_time(case, 1) is None
     write_time(case, "50")
     write_time(case, "100", mark=False, drop="U.air")     # a kill inside the write
-    assert cc.latest_time(s, case) == 50
+    assert ft.latest_time(case, 1) == 50
     write_time(case, "150", cut="U.air")                   # marked, a field cut short
-    assert cc.latest_time(s, case) == 50
-    assert sorted(cc.drop_times_after(s, case, 50)) == ["100", "150"]
+    assert ft.latest_time(case, 1) == 50
+    assert sorted(ft.drop_times_after(case, 1, 50)) == ["100", "150"]
     assert sorted(os.listdir(case)) == ["0", "50"]
 
 
-def test_parallel_needs_every_processor(cc, tmp_path):
+def test_parallel_needs_every_processor(tmp_path):
     case = str(tmp_path)
-    s = {"np": 2}
     for p in ("processor0", "processor1"):
         os.makedirs(os.path.join(case, p, "0"))
         write_time(os.path.join(case, p), "50")
     write_time(os.path.join(case, "processor0"), "100")
     write_time(os.path.join(case, "processor1"), "100", mark=False)
-    assert cc.latest_time(s, case) == 50
+    assert ft.latest_time(case, 2) == 50

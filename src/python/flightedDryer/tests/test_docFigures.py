@@ -7,9 +7,8 @@ import sys
 
 import pytest
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "src", "python"))
-import docFigures as df  # noqa: E402
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", ".."))
+from flightedDryer import docFigures as df  # noqa: E402
 
 CSV = "# a comment\nmodel,group,rms_ln,bias_ln\nshipped,all,0.3687,-0.0731\nother one,all,0.5,0.1\n"
 

@@ -7,10 +7,9 @@ import sys
 
 import pytest
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-import foamDictionary  # noqa: E402
+from flightedDryer import foamDictionary  # noqa: E402
 
-ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", ".."))
 MESH = os.path.join(ROOT, "etc", "templates", "curtain", "windTunnel", "system", "meshParameters")
 WARNING = ("--> FOAM Warning : \n    From function Foam::fileName Foam::cwd_L()\n"
            "    in file POSIX.C at line 494\n    PWD is not the cwd() - reverting to physical description\n")

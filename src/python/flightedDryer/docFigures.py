@@ -38,7 +38,7 @@ import os
 import re
 import urllib.parse
 
-import dryerFiles
+from . import files
 
 MARKER = re.compile(r"<!--fig (\S+) (\S+) (\S+) (\S+?)-->(.*?)<!--/fig-->")
 IN_MARKER = re.compile(r"<!--in (\S+) (\S+?)-->(.*?)<!--/in-->")
@@ -222,7 +222,7 @@ def update(root, doc):
     text = _read(root, doc)
     new, diffs = render(root, doc, text)
     if new != text:
-        dryerFiles.atomic_write(os.path.join(root, doc), new.encode("utf-8"))
+        files.atomic_write(os.path.join(root, doc), new.encode("utf-8"))
     return len(diffs)
 
 

@@ -1,0 +1,208 @@
+"""dictionary: the sweep dictionary (OpenFOAM format) read strictly into the sweep's
+settings: box scene (a grid of gas velocity, spill, flight length, density, fall
+height and diameter, with floors, the gas, the layer and the material) or
+drumSegment scene (a grid of repose angles and gas velocities)."""
+
+import os
+import subprocess
+
+from .. import PROJECT, facts, gas
+from ..errors import InputError
+from ..messages import g6
+from ..strictDict import StrictDict, check_allowed
+from .settings import (DEFAULT_TEMPLATE, GRID_KEYS, SCENES, SEGMENT_GRID_KEYS, SEGMENT_TEMPLATE,
+                       SEGMENT_TOP_KEYS, TOP_KEYS, axes, say)
+
+
+def check_keys(path, top, scene):
+    """Unknown or duplicated entries are refused, with the nearest allowed name
+    (the allowed entries are the scene's)."""
+    top_keys, grid_keys = (TOP_KEYS, GRID_KEYS) if scene == "box" else (SEGMENT_TOP_KEYS, SEGMENT_GRID_KEYS)
+    return check_allowed(path, top, top_keys, grid_keys, "grid",
+                         note=lambda key: " (an entry of scene box)" if scene != "box" and key in TOP_KEYS else "",
+                         sub_note=" (scene %s)" % scene)
+
+
+def outputs(d, s, default_output):
+        """The table (relative to the dictionary's folder) and the work folder (relative to
+        the project, default run/driftTable/<dictionary name>) into s."""
+        out = d.string("output", default_output)
+        if not out.strip():
+            raise InputError("%s: entry 'output' is empty: a file name for the table (relative to "
+                            "the dictionary's folder)" % d.where("output"))
+        s["output"] = os.path.normpath(os.path.join(os.path.dirname(d.path), out))
+        s["work"] = os.path.normpath(os.path.join(PROJECT, d.string(
+            "work", os.path.join("run", "driftTable", os.path.basename(d.path)))))
+
+
+def read_sweep(dict_path):
+    """The sweep's settings (a dict) from its dictionary; InputError naming the
+    file, line and entry on anything not allowed."""
+    d = StrictDict(dict_path)
+    d.scene = d.word("scene", "box", allowed=SCENES)
+    check_keys(d.path, d.lines, d.scene)
+    if d.scene == "drumSegment":
+        return read_segment_sweep(d)
+    s = {"dict": d.path, "scene": "box"}
+    s["template"] = d.folder("template", DEFAULT_TEMPLATE)
+    s["level"] = d.word("level", "coarse")
+    s["drag"] = d.word("drag", "SchillerNaumann", allowed=list(facts.drag_laws()))
+    s["particleTurbulence"] = d.word("particleTurbulence", "none",
+                                     allowed=["none", "Simonin", "SimoninCrowe"])
+    s["turbulence"] = d.word("turbulence", allowed=["kEpsilon", "realizableKE", "kOmegaSST"]) \
+        if d.has("turbulence") else None
+    s["wakeShare"] = None
+    if d.has("wakeShare"):
+        if s["particleTurbulence"] != "SimoninCrowe":
+            raise InputError("%s: entry 'wakeShare' belongs to particleTurbulence SimoninCrowe (here %s)"
+                            % (d.where("wakeShare"), s["particleTurbulence"]))
+        s["wakeShare"] = d.scalar("wakeShare", 0, 1)
+    s["gasTemperature"] = None
+    if d.has("gasTemperature"):
+        s["gasTemperature"] = d.scalar("gasTemperature", -50, 1500, "degC")
+        try:
+            gas.air_properties(s["gasTemperature"], entry="gasTemperature",
+                               warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
+        except gas.GasError as e:
+            raise InputError("%s: entry 'gasTemperature': %s" % (d.where("gasTemperature"), e))
+    s["gasPressure"] = d.scalar("gasPressure", 10, 1000, "kPa") if d.has("gasPressure") else None
+    s["boxWidth"] = d.scalar("boxWidth", 0, 20, "m") if d.has("boxWidth") else None
+    s["iterations"] = d.whole("iterations", 9, 100000)
+    s["layerThickness"] = None
+    if d.has("layerThickness"):
+        # packed or a thickness; curtainCase -check gives each case's final word
+        s["layerThickness"] = "packed" if d.value("layerThickness") == "packed" else \
+            d.scalar("layerThickness", 0, 0.2, "m (or packed)")
+    if d.has("bulkDensity") and s["layerThickness"] != "packed":
+        raise InputError("%s: entry 'bulkDensity' belongs to 'layerThickness packed'" % d.where("bulkDensity"))
+    ranges = {
+        "gasVelocity": (0, 50, "m/s"), "spillRate": (0, facts.max_spill_rate(), "kg/(m s)"),
+        "fallHeight": (0, 1000, "m"), "flightLength": (0, 100, "m"),
+        "particleDensity": (0, 25000, "kg/m3"), "diameter": (0, 0.05, "m"),
+    }
+    classes = None
+    if d.has("sizeClasses"):
+        d.word("sizeClasses", allowed=["material"])
+        if not d.has("material"):
+            raise InputError("%s: entry 'sizeClasses material' needs the entry 'material' (a material of "
+                            "windtunnel_materials.csv)" % d.where("sizeClasses"))
+        for e in ("grid/diameter", "massFractions"):
+            if d.has(e):
+                raise InputError("%s: entry '%s' is what 'sizeClasses material' generates "
+                                "(windTunnelDrift -sizeClasses): remove one of them" % (d.where(e), e))
+        classes = material_classes(d, d.word("material"))
+    s["grid"] = {}
+    for name, _, _ in axes():
+        lo, hi, units = ranges[name]
+        if name == "diameter" and classes:
+            s["grid"][name] = classes["diameter"]
+            continue
+        s["grid"][name] = d.scalar_list("grid/" + name, lo, hi, units)
+    if classes and (len(s["grid"]["particleDensity"]) != 1
+                    or abs(s["grid"]["particleDensity"][0] - classes["particleDensity"]) > 1e-9 * classes["particleDensity"]):
+        raise InputError("%s: entry 'grid/particleDensity' must be the material's own density, %g kg/m3 "
+                        "(windtunnel_materials.csv)" % (d.where("grid/particleDensity"), classes["particleDensity"]))
+    nd = len(s["grid"]["diameter"])
+    s["fractions"] = classes["massFractions"] if classes else \
+        d.scalar_list("massFractions", -1e-300, 1, "", increasing=False)
+    if len(s["fractions"]) != nd:
+        raise InputError("%s: entry 'massFractions' has %d values for %d diameters (one each)"
+                        % (d.path, len(s["fractions"]), nd))
+    if abs(sum(s["fractions"]) - 1) > 1e-3:
+        raise InputError("%s: entry 'massFractions' sums to %g, allowed range [0.999, 1.001]"
+                        % (d.path, sum(s["fractions"])))
+    s["material"] = None
+    if d.has("material"):
+        m = d.word("material")
+        if not all(ch.isalnum() or ch in "_-." for ch in m):
+            raise InputError("%s: entry 'material' = '%s': letters, digits, '_', '-' and '.' only"
+                            % (d.path, m))
+        if len(s["grid"]["particleDensity"]) != 1:
+            raise InputError("%s: entry 'material' names one material, but grid/particleDensity has %d "
+                            "values (a material has one density)" % (d.path, len(s["grid"]["particleDensity"])))
+        s["material"] = m
+    s["bulkDensity"] = None
+    if s["layerThickness"] == "packed":
+        if classes and d.has("bulkDensity"):
+            raise InputError("%s: entry 'bulkDensity' is the material's own with 'sizeClasses material' "
+                            "(%g kg/m3, windtunnel_materials.csv): remove it" % (d.where("bulkDensity"),
+                                                                                  classes["bulkDensity"]))
+        if classes:
+            s["bulkDensity"] = classes["bulkDensity"]
+        elif d.has("bulkDensity"):
+            s["bulkDensity"] = d.scalar("bulkDensity", 0, min(s["grid"]["particleDensity"]),
+                                        "kg/m3 (at most the smallest particle density)")
+        else:
+            raise InputError("%s: entry 'layerThickness packed' needs the entry 'bulkDensity' (kg/m3)"
+                            % d.where("layerThickness"))
+    s["floors"] = read_floors(d, s["grid"]["fallHeight"])
+    outputs(d, s, "driftTable.csv")
+    return s
+
+
+def read_floors(d, heights):
+    """The entry floors: fall heights of the grid, increasing; the largest fall height
+    is always one (added when not listed)."""
+    top = max(heights)
+    if not d.has("floors"):
+        return [top]
+    floors = d.scalar_list("floors", 0, 1000, "m")
+    for f in floors:
+        if not any(abs(f - h) <= 1e-9 * max(1, h) for h in heights):
+            raise InputError("%s: entry 'floors': %g m is not a fall height of grid/fallHeight (%s)"
+                            % (d.where("floors"), f, " ".join(g6(h) for h in heights)))
+    floors = [min(heights, key=lambda h: abs(h - f)) for f in floors]
+    return floors if floors[-1] == top else floors + [top]
+
+
+def floor_of(s, h):
+    """The floor a fall height is read at: the lowest at or above it."""
+    return min(f for f in s["floors"] if f >= h)
+
+
+def read_segment_sweep(d):
+    """scene drumSegment: the flight dictionary, the segment's settings and the grid of
+    dynamic angles of repose and gas velocities (drumSegmentCase's ranges)."""
+    s = {"dict": d.path, "scene": "drumSegment", "material": None}
+    s["flights"] = os.path.normpath(os.path.join(PROJECT, d.string("flights")))
+    if not os.path.isfile(s["flights"]):
+        raise InputError("%s: entry 'flights': no flight dictionary %s" % (d.where("flights"), s["flights"]))
+    s["template"] = d.folder("template", SEGMENT_TEMPLATE)
+    s["level"] = d.word("level", "coarse", allowed=["coarse", "medium", "fine"])
+    s["ends"] = d.word("ends", "periodic", allowed=["periodic", "open"])
+    s["iterations"] = d.whole("iterations", 30, 100000, multiple=3,
+                              why=": the results are the means over the last third")
+    s["segmentLength"] = None
+    if d.has("segmentLength"):
+        s["segmentLength"] = d.scalar("segmentLength", 0.1, 100, "m")
+    s["grid"] = {"reposeAngle": d.scalar_list("grid/reposeAngle", 20, 70, "deg", lo_closed=True),
+                 "gasVelocity": d.scalar_list("grid/gasVelocity", 0.05, 10, "m/s", lo_closed=True)}
+    outputs(d, s, "segmentTable.csv")
+    return s
+
+
+def air_properties(t, p=None):
+    """(rho, nu) of dry air at t degC and p kPa (None: 1 atm) as text (flightedDryer.gas,
+    as curtainCase -gasTemperature/-gasPressure)."""
+    try:
+        return gas.air_properties(t, p)
+    except gas.GasError as e:
+        raise InputError("entries 'gasTemperature', 'gasPressure': %s" % e)
+
+
+def material_classes(d, material):
+    """A wind-tunnel material's size classes and density, as the C++ side computes
+    them (windTunnelDrift -sizeClasses: Table A.1, open bins closed, 6 digits)."""
+    r = subprocess.run(["windTunnelDrift", "-sizeClasses", material], capture_output=True, text=True)
+    if r.returncode != 0:
+        raise InputError("%s: entry 'material': %s" % (d.where("material"), (r.stderr or r.stdout).strip()))
+    out = {}
+    for line in r.stdout.splitlines():
+        key, _, value = line.partition(":")
+        if key in ("diameter", "massFractions"):
+            out[key] = [float(x) for x in value.split()]
+        elif key in ("particleDensity", "bulkDensity"):
+            out[key] = float(value)
+    if set(out) != {"diameter", "massFractions", "particleDensity", "bulkDensity"}:
+        raise InputError("%s: windTunnelDrift -sizeClasses %s gave no classes: %s" % (d.path, material, r.stdout))
+    return out

@@ -1,0 +1,142 @@
+"""localPool: the sweep's runs on this machine, -jobs at a time (threads, each
+waiting on one curtainCase in its own process group), each tried twice unless
+its failure would repeat; every case is checked with curtainCase -check first."""
+
+import os
+import re
+import subprocess
+import threading
+import time
+
+from ..errors import InputError
+from ..processes import Children
+from .plan import case_args, case_log, finished
+from .settings import case_option_entries, say
+
+
+def check_cases(s, cases, np_):
+    """curtainCase -check on every case: a bad level, drag, fall height or spill
+    rate stops the sweep before anything runs (exit 2)."""
+    for c in cases:
+        r = subprocess.run(["curtainCase"] + case_args(s, c, np_) + ["-check"],
+                           capture_output=True, text=True)
+        if r.returncode != 0:
+            lines = [l for l in (r.stderr + r.stdout).splitlines() if l.strip()]
+            why = lines[-1].replace("curtainCase: ", "") if lines else "exit %d" % r.returncode
+            # the sweep dictionary's entry behind the curtainCase option the check names
+            named = [entry for entry, opt in case_option_entries() if re.search(r"(^|\s)%s\b" % opt, why)]
+            raise InputError("%s: case %s%s: %s" % (s["dict"], c["name"],
+                                                   " (entry %s)" % named[0] if named else "", why))
+        # the inputs' signature (settings and template content): a finished case made
+        # with another template or curtainCase settings is not taken as finished
+        for line in r.stdout.splitlines():
+            if line.startswith("inputs "):
+                c["inputs"] = line.split()[1]
+
+
+class Sweep:
+    """The runs on this machine, -jobs at a time, each tried twice unless its
+    failure would repeat (bad input, a run unsteady to its end)."""
+
+    def __init__(self, s, cases, jobs, np_):
+        self.s, self.cases, self.jobs, self.np = s, cases, jobs, np_
+        self.lock = threading.Lock()
+        self.children = Children()
+        self.stopping = False
+        self.failed = {}
+        self.done_times = []
+        self.t0 = time.time()
+
+    def run_case(self, c):
+        log = case_log(self.s, c)
+        os.makedirs(os.path.dirname(log), exist_ok=True)
+        for attempt in (1, 2):
+            if self.stopping:
+                return False
+            t = time.time()
+            with open(log, "a") as f:
+                f.write("=== attempt %d: curtainCase %s\n" % (attempt, " ".join(case_args(self.s, c, self.np))))
+                f.flush()
+                # own process group (stopped as a whole); SIGTERM if this tool dies
+                p = self.children.spawn(["curtainCase"] + case_args(self.s, c, self.np), f)
+                rc = p.wait()
+                self.children.done(p)
+            if self.stopping:
+                return False
+            if rc == 0 and finished(self.s, c):
+                with self.lock:
+                    self.done_times.append(time.time() - t)
+                return True
+            reason = tail_reason(log)
+            # a retry cannot change bad input or a run that ran to its end unsteady
+            deterministic = rc == 2 or "not converged" in reason
+            if attempt == 1 and not deterministic:
+                say("case %s failed (%s); retrying once" % (c["name"], reason))
+            else:
+                with self.lock:
+                    self.failed[c["name"]] = reason
+                say("case %s FAILED%s: %s (log %s)"
+                    % (c["name"], " (not retried: it would fail again)" if deterministic and attempt == 1
+                       else " twice", reason, log))
+                break
+        return False
+
+    def progress(self, n_done, n_todo):
+        el = time.time() - self.t0
+        with self.lock:
+            mean = sum(self.done_times) / len(self.done_times) if self.done_times else None
+        left = n_todo - n_done
+        eta = "?" if mean is None else "%.0f s" % (mean * left / max(1, min(self.jobs, left or 1)))
+        return "%d/%d cases done this run, %.0f s elapsed, about %s left" % (n_done, n_todo, el, eta)
+
+    def run(self, todo):
+        queue = list(todo)
+        active = []
+        n_done = 0
+        while queue or active:
+            while queue and len(active) < self.jobs and not self.stopping:
+                c = queue.pop(0)
+                say("starting %s" % c["name"])
+                th = threading.Thread(target=lambda c=c: c.__setitem__("ok", self.run_case(c)))
+                th.start()
+                active.append((c, th))
+            time.sleep(0.5)
+            for c, th in list(active):
+                if not th.is_alive():
+                    active.remove((c, th))
+                    n_done += 1
+                    say("%s %s; %s" % (c["name"], "done" if c.get("ok") else
+                                       ("stopped" if self.stopping else "failed"),
+                                       self.progress(n_done, len(todo))))
+            if self.stopping and not active:
+                break
+
+    def stop(self):
+        self.stopping = True
+        self.children.terminate_all()   # each curtainCase stops its solver
+
+
+def log_lines(path):
+    """The non-empty lines of a log, None if it cannot be read."""
+    try:
+        with open(path, errors="replace") as f:
+            return [l.strip() for l in f if l.strip()]
+    except OSError:
+        return None
+
+
+def curtain_reason(lines, empty):
+    """curtainCase's last word in a log: its bad-input, FAILED or interrupted line
+    (or drumSegmentCase's: its lines name it)."""
+    for l in reversed(lines):
+        if l.startswith("curtainCase: bad input") or l.startswith("curtainCase: FAILED") \
+                or "interrupted" in l:
+            return l[len("curtainCase: "):] if l.startswith("curtainCase: ") else l
+        if l.startswith("drumSegmentCase: ") and not l.startswith("drumSegmentCase: inputs"):
+            return l
+    return lines[-1] if lines else empty
+
+
+def tail_reason(log):
+    lines = log_lines(log)
+    return "no log" if lines is None else curtain_reason(lines, "no output")
