@@ -3,7 +3,6 @@ is reported, and a value that is not a finite number, a missing row or column,
 a needle a test does not hold, or a figure typed by hand is an error."""
 
 import os
-import sys
 
 import pytest
 
