@@ -190,7 +190,7 @@ for name, extra, needle in (
     if "-out" not in extra:
         argv += ["-out", "p.csv"]
     add("windTunnelDrift", "option-" + name, {"tdir": None}, argv, [needle])
-SHERRITT_PRED = "tests/validation/windTunnelDrift/results/predictions/sherritt.csv"
+SHERRITT_PRED = "validation/windTunnelDrift/results/predictions/sherritt.csv"
 for name, fn, needles in (
         ("twice", lambda t: t + t.split("\n")[1] + "\n", ["p.csv", "twice"]),
         ("unknown", lambda t: t + "9999,1.5\n", ["p.csv", "9999"]),

@@ -187,15 +187,18 @@ def render(root, doc, text):
             i = end + 1
             continue
 
-        for m in IN_MARKER.finditer(line):
-            _tested(results.root, m.group(1), urllib.parse.unquote(m.group(2)), where)
-
         def fill(m):
             v = value(root, *m.groups()[:4], where, results)
             if v != m.group(5):
                 diffs.append((n, "%s %s %s" % m.groups()[:3], m.group(5), v))
             return "<!--fig %s %s %s %s-->%s<!--/fig-->" % (m.groups()[:4] + (v,))
-        out.append(MARKER.sub(fill, line))
+        # a marker inside a code span is an example of the syntax, not a figure
+        parts = re.split(r"(`[^`]*`)", line)
+        for k in range(0, len(parts), 2):
+            for m in IN_MARKER.finditer(parts[k]):
+                _tested(results.root, m.group(1), urllib.parse.unquote(m.group(2)), where)
+            parts[k] = MARKER.sub(fill, parts[k])
+        out.append("".join(parts))
         i += 1
     return "\n".join(out), diffs
 

@@ -22,26 +22,25 @@ import time
 from .errors import Busy
 
 
-def pid_alive(pid):
-    """Is there a process of that id (ours or another user's)?"""
+def _signal_reaches(kill, target):
+    """Would a signal reach the target (signal 0: nothing is sent)?"""
     try:
-        os.kill(pid, 0)
+        kill(target, 0)
     except ProcessLookupError:
         return False
     except PermissionError:
-        return True
+        return True         # there, but another user's
     return True
+
+
+def pid_alive(pid):
+    """Is there a process of that id (ours or another user's)?"""
+    return _signal_reaches(os.kill, pid)
 
 
 def group_alive(pgid):
     """Is any process of that process group left?"""
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
+    return _signal_reaches(os.killpg, pgid)
 
 
 def stop_group(pgid, wait=10, child=None):

@@ -6,7 +6,7 @@
 Chart 1 (driftSpeedAccuracy.png, driftSpeedAccuracy.csv):
   (a) every drift model against the shared wind-tunnel tests: RMS of
       ln(predicted/measured mean advance) against the CPU (wall) time per
-      prediction, from tests/validation/windTunnelDrift/results (scores.csv,
+      prediction, from validation/windTunnelDrift/results (scores.csv,
       timing.csv; the cfd rows are scored on the rows they ran, also shown
       like-for-like from scores_cfdRows.csv);
   (b) the CFD solvers on one wind-tunnel curtain (0.5 mm sand, 22 kg/(m s),

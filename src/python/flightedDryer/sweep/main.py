@@ -11,7 +11,7 @@ import sys
 import threading
 import time
 
-from .. import PROJECT, foamDictionary
+from .. import PROJECT, foamDictionary, options
 from ..errors import InputError, SchedulerError
 from ..files import WriteError, atomic_write
 from .dictionary import read_sweep
@@ -22,30 +22,15 @@ from .slurm import print_status, read_submission, run_slurm, slurm_dir, task_rea
 from .table import write_table
 
 
+FLAGS = {"-allowIncomplete", "-slurm", "-collect", "-list", "-status", "-noWait"}
+VALUED = {"-dict", "-jobs", "-np", "-work", "-out", "-scheduler", "-partition", "-account",
+          "-time", "-sbatchOptions"}
+
+
 def parse(argv, usage):
-    opts = {"-jobs": "1", "-np": "1", "-scheduler": "local"}
-    given = set()
-    flags = {"-allowIncomplete", "-slurm", "-collect", "-list", "-status", "-noWait"}
-    valued = {"-dict", "-jobs", "-np", "-work", "-out", "-scheduler", "-partition", "-account",
-              "-time", "-sbatchOptions"}
-    i = 0
-    while i < len(argv):
-        a = argv[i]
-        if a in ("-h", "-help", "--help"):
-            print(usage)
-            sys.exit(0)
-        if a in flags or a in valued:
-            if a in given:
-                raise InputError("option %s given twice: give it once" % a)
-            given.add(a)
-        if a in flags:
-            opts[a] = True
-            i += 1
-        elif a in valued and i + 1 < len(argv):
-            opts[a] = argv[i + 1]
-            i += 2
-        else:
-            raise InputError("unknown option or missing value: '%s' (see buildDriftTable -help)" % a)
+    """buildDriftTable's options, each given once and checked."""
+    opts = dict({"-jobs": "1", "-np": "1", "-scheduler": "local"},
+                **options.parse(argv, FLAGS, VALUED, (), "buildDriftTable", usage))
     if "-dict" not in opts and not ("-status" in opts and "-work" in opts):
         raise InputError("missing -dict FILE (or -status -work DIR)")
     for k in ("-jobs", "-np"):

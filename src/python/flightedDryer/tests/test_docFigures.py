@@ -110,3 +110,8 @@ def test_unmarked_finds_figures_typed_by_hand(tree):
 def test_negative_zero_has_no_sign():
     assert df.fmt(-0.0001, "%+.2f") == "0.00"
     assert df.fmt(-0.01, "%.2f") == "\u22120.01"
+
+
+def test_a_marker_in_a_code_span_is_an_example(tree):
+    d = doc(tree, "write `<!--fig r.csv model=none rms_ln %.3f-->1<!--/fig-->` or `<!--in TEST X-->`")
+    assert df.check(str(tree), d) == []

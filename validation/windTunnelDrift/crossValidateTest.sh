@@ -22,7 +22,7 @@ grep -q "^fall_height,10.3,A," "$cv" || fail "10.3 m held out: A not chosen"
 grep -q "^fall_height,6.6,B," "$cv" || fail "6.6 m held out: B not chosen"
 [ "$(grep -c '^material,.*,A,' "$cv")" = 3 ] || fail "leave one material out: A not chosen three times"
 get() { awk -F, -v m="$1" -v g="$2" -v v="$3" '$1==m && $3==g && $4==v {print $6}' "$br"; }
-. "$(dirname "$0")/../../foam/testFunctions"   # isFiniteNumber (mawk takes NaN as equal to anything)
+. "$(dirname "$0")/../../tests/foam/testFunctions"   # isFiniteNumber (mawk takes NaN as equal to anything)
 near() { isFiniteNumber "$1" && isFiniteNumber "$2" && awk -v a="$1" -v b="$2" 'BEGIN{exit !((a-b)^2 <= 1e-8)}' \
     || fail "$3: $1, expected $2"; }
 near "$(get cv_height all all)" 0.1989 "leave one fall height out"
@@ -60,7 +60,7 @@ near "$(col A rms_ln_less_material_bias)" 0 "A less its material bias"
 [ -s "$work/r/crossValidation.png" ] && [ -s "$work/r/predictions/cv_height.csv" ] || fail "png or predictions missing"
 # Eq 142 refitted leaving one material out: three different fits, each
 # fold's constants reproduce its held-out predictions through windTunnelDrift
-tool="$(cd "$(dirname "$script")/../../.." && pwd)/platforms/bin/windTunnelDrift"
+tool="$(cd "$(dirname "$script")/../.." && pwd)/platforms/bin/windTunnelDrift"
 DRYER_DATA="$data" "$script" -candidates A,B -results "$work/r" -out "$work/e" -eq142 > "$work/log.e" 2>&1 \
     || { cat "$work/log.e"; fail "crossValidate -eq142 exit $?"; }
 [ "$(grep -c '^eq142_material,' "$work/e/crossValidation.csv")" = 3 ] || fail "not three eq142 folds"

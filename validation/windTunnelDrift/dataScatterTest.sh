@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 csv="$work/dataScatter.csv"
 [ -f "$csv" ] && [ ! -e "$csv.tmp" ] || fail "no $csv (or a .tmp left)"
 val() { grep -F "$1" "$csv" | awk -F, '{print $NF}'; }
-. "$(dirname "$0")/../../foam/testFunctions"   # isFiniteNumber (mawk takes NaN as equal to anything)
+. "$(dirname "$0")/../../tests/foam/testFunctions"   # isFiniteNumber (mawk takes NaN as equal to anything)
 near() { isFiniteNumber "$1" && isFiniteNumber "$2" && awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN{exit !((a-b)^2 <= t^2)}' \
     || fail "$4: $1, expected $2 +- $3"; }
 near "$(val 'one constant per material (leave one out)')" 0.278 0.001 "material fit, leave one out"

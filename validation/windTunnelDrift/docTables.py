@@ -12,7 +12,7 @@ import os
 
 from flightedDryer import docFigures as df
 
-HERE = "tests/validation/windTunnelDrift"
+HERE = "validation/windTunnelDrift"
 RES = HERE + "/results"
 BREAKDOWN = RES + "/scoresBreakdown.csv"
 SITE = RES + "/siteAir/scoresBreakdown.csv"

@@ -32,7 +32,7 @@ awk -F, 'NR==1 { for (i = 1; i <= NF; ++i) c[$i] = i }
 # against the tracer: the measured side is the tracer's own (its trapezoids on its samples)
 cmp="$work/results/tracerComparison.csv"
 [ -s "$cmp" ] || fail "no tracerComparison.csv"
-. "$(dirname "$0")/../../foam/testFunctions"
+. "$(dirname "$0")/../../tests/foam/testFunctions"
 value() { awk -F, -v q="$1" -v c="$2" 'NR==1 { for (i = 1; i <= NF; ++i) k[$i] = i } $1 == q { print $k[c] }' "$cmp"; }
 checkClose "measured body mean [min]" "$(calc "v/60" v="$(value body_mean_s measured)")" 9.915 0.005
 checkClose "measured body SD [min]" "$(calc "v/60" v="$(value body_std_s measured)")" 2.459 0.005

@@ -1,0 +1,101 @@
+"""sweep: the plan of a sweep (its runs, names, arguments, floors), its signature,
+the resume decision (a run is finished only with these arguments and inputs),
+and the Slurm job array written without a cluster."""
+
+import json
+import os
+
+import pytest
+
+from flightedDryer import PROJECT
+from flightedDryer.errors import InputError
+from flightedDryer.sweep import plan, slurm
+from flightedDryer.sweep.dictionary import read_sweep
+
+HEAD = "FoamFile { version 2.0; format ascii; class dictionary; object d; }\n"
+GRID = ("grid { gasVelocity (1 3); spillRate (2); flightLength (1); particleDensity (1590);\n"
+        "       fallHeight (1 2 4); diameter (3e-4 1e-3); }\nmassFractions (0.4 0.6);\n")
+
+
+def sweep(tmp_path, extra=""):
+    p = tmp_path / "sweepDict"
+    p.write_text(HEAD + GRID + extra + "work \"%s\";\n" % (tmp_path / "work"))
+    return read_sweep(str(p))
+
+
+def test_the_plan_of_a_box_sweep(tmp_path):
+    s = sweep(tmp_path, "floors (2 4);\n")
+    cases = plan.cases_of(s)
+    assert [c["name"] for c in cases] == ["V1_S2_L1_rho1590_H2", "V1_S2_L1_rho1590",
+                                          "V3_S2_L1_rho1590_H2", "V3_S2_L1_rho1590"]
+    low, high = cases[0], cases[1]
+    assert low["serves"] == [1.0, 2.0] and high["serves"] == [4.0]
+    assert low["args"][:6] == ["-gasVelocity", "1", "-spillRate", "2", "-fallHeight", "2"]
+    assert "-heights" in high["args"] and high["args"][high["args"].index("-heights") + 1] == "1,2"
+    assert high["args"][high["args"].index("-fractions") + 1] == "0.4,0.6"
+    assert s["output"] == str(tmp_path / "driftTable.csv")
+
+
+def test_the_signature_follows_the_arguments(tmp_path):
+    a = plan.grid_key(plan.cases_of(sweep(tmp_path)))
+    assert a == plan.grid_key(plan.cases_of(sweep(tmp_path)))        # same inputs, same bits
+    assert a != plan.grid_key(plan.cases_of(sweep(tmp_path, "gasTemperature 80;\n")))
+    assert a != plan.grid_key(plan.cases_of(sweep(tmp_path, "floors (2 4);\n")))
+
+
+@pytest.mark.parametrize("extra,match", [
+    ("drag Stokes;\n", r"entry 'drag' = 'Stokes' is not one of SchillerNaumann"),
+    ("floors (3);\n", r"entry 'floors': 3 m is not a fall height of grid/fallHeight"),
+    ("gasTemprature 80;\n", r"unknown entry 'gasTemprature' \(did you mean 'gasTemperature'\?\)"),
+    ("bulkDensity 900;\n", r"entry 'bulkDensity' belongs to 'layerThickness packed'"),
+])
+def test_bad_sweeps_are_refused_naming_the_entry(tmp_path, extra, match):
+    with pytest.raises(InputError, match=match):
+        sweep(tmp_path, extra)
+
+
+def finish(s, c, argv=None, inputs="sig"):
+    d = plan.case_dir(s, c)
+    os.makedirs(d, exist_ok=True)
+    with open(os.path.join(d, "curtainResult.csv"), "w") as f:
+        f.write("class\n")
+    with open(os.path.join(d, "curtainCase.args.json"), "w") as f:
+        json.dump({"argv": argv if argv is not None else ["-dir", d] + c["args"], "inputs": inputs}, f)
+
+
+def test_resume_takes_a_run_as_finished_only_with_these_inputs(tmp_path):
+    s = sweep(tmp_path)
+    c = plan.cases_of(s)[0]
+    assert not plan.finished(s, c)                       # nothing there
+    finish(s, c)
+    assert plan.finished(s, c)
+    finish(s, c, argv=["-dir", plan.case_dir(s, c)] + c["args"] + ["-np", "2"])
+    assert plan.finished(s, c)                           # -np does not change the answer
+    finish(s, c, argv=["-dir", plan.case_dir(s, c)] + c["args"][:-2])
+    assert not plan.finished(s, c)                       # other arguments
+    finish(s, c)
+    c["inputs"] = "other"                                # curtainCase -check's signature differs
+    assert not plan.finished(s, c)
+    os.remove(os.path.join(plan.case_dir(s, c), "curtainCase.args.json"))
+    assert not plan.finished(s, c)
+
+
+def test_the_slurm_array_is_written_without_a_cluster(tmp_path):
+    s = sweep(tmp_path)
+    cases = plan.cases_of(s)
+    sched = {"partition": "short", "account": None, "time": "00:30:00", "extra": ["--mem=2G"]}
+    script, collect, lst = slurm.write_slurm(s, cases, [cases[0], cases[1]], 2, sched)
+    text = open(script).read()
+    assert "#SBATCH --array=0-1\n" in text and "#SBATCH --ntasks=2\n" in text
+    assert "#SBATCH --partition=short\n#SBATCH --time=00:30:00\n#SBATCH --mem=2G\n" in text
+    assert ". %s/etc/bashrc" % PROJECT in text
+    lines = open(lst).read().splitlines()
+    assert len(lines) == 2 and lines[0].startswith("curtainCase -dir ") and lines[0].endswith("-np 2")
+    assert "buildDriftTable -dict %s -work %s -out %s -collect" % (s["dict"], s["work"], s["output"]) \
+        in open(collect).read()
+    assert os.access(script, os.X_OK) and os.access(collect, os.X_OK)
+
+
+def test_array_ranges():
+    assert slurm.array_spec([0, 1, 2, 3, 5, 7, 8]) == "0-3,5,7-8"
+    assert slurm.array_spec([4]) == "4"
