@@ -140,3 +140,10 @@ def remove(path, entry):
     rc, out, err = run(["-entry", entry, "-remove"], path, entry)
     if rc != 0:
         raise FoamDictionaryError(path, entry, "could not be removed: %s" % last_error(err, out))
+
+
+def add(path, entry, text):
+    """Add the entry with the value `text` (foamDictionary -add)."""
+    rc, out, err = run(["-entry", entry, "-add", text], path, entry)
+    if rc != 0:
+        raise FoamDictionaryError(path, entry, "could not be added as '%s': %s" % (text, last_error(err, out)))
