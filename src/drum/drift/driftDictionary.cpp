@@ -70,14 +70,35 @@ DriftSettings readDriftSettings
     }
     const YAML::Node d = root["drift"];
     if (!d) return s;
-    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, segmentTable, outside, constants, auto)");
+    if (!d.IsMap()) throw InputError(file, "drift", "must be a dictionary (table, segmentTable, outside, constants, auto, scale, recordQueries)");
     for (const auto& kv : d)
     {
         const std::string k = kv.first.as<std::string>();
-        if (k != "table" && k != "segmentTable" && k != "outside" && k != "constants" && k != "auto")
+        if (k != "table" && k != "segmentTable" && k != "outside" && k != "constants" && k != "auto"
+            && k != "scale" && k != "recordQueries")
         {
-            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, segmentTable, outside, constants, auto");
+            throw InputError(file, "drift." + k, "unknown entry; valid entries are table, segmentTable, outside, "
+                             "constants, auto, scale, recordQueries");
         }
+    }
+    if (d["scale"])
+    {
+        try { s.scale = d["scale"].as<double>(); }
+        catch (const std::exception&) { throw InputError(file, "drift.scale", "not a number"); }
+        if (!(s.scale > 0 && s.scale <= 10))
+        {
+            throw InputError(file, "drift.scale", "value " + scalar(d["scale"], file, "drift.scale")
+                             + " outside the allowed range (0, 10]");
+        }
+    }
+    if (d["recordQueries"])
+    {
+        const std::string v = scalar(d["recordQueries"], file, "drift.recordQueries");
+        if (v != "true" && v != "false")
+        {
+            throw InputError(file, "drift.recordQueries", "'" + v + "': true or false");
+        }
+        s.recordQueries = v == "true";
     }
     auto path = [&](const char* key)
     {
@@ -181,7 +202,10 @@ void requireTableGas(const DriftTable& table, const particleDrag::Gas& gas)
 }
 
 
-std::shared_ptr<const DriftModel> makeDriftModel
+namespace
+{
+
+std::shared_ptr<const DriftModel> makeBareDriftModel
 (
     const DriftSettings& s,
     const particleDrag::Gas& gas,
@@ -253,6 +277,29 @@ std::shared_ptr<const DriftModel> makeDriftModel
         return std::make_shared<AutoDrift>(table, inside, reduced, isolated, s.autoOptions, outside);
     }
     throw InputError("", entry, "unknown drift model '" + s.model + "': valid names are " + nameList());
+}
+
+} // namespace
+
+
+std::shared_ptr<const DriftModel> makeDriftModel
+(
+    const DriftSettings& s,
+    const particleDrag::Gas& gas,
+    const particleDrag::DragLaw& law,
+    const std::string& entry
+)
+{
+    std::shared_ptr<const DriftModel> m = makeBareDriftModel(s, gas, law, entry);
+    if (s.scale != 1.0)
+    {
+        m = std::make_shared<ScaledDrift>(m, s.scale);
+    }
+    if (s.recordQueries)
+    {
+        m = std::make_shared<RecordingDrift>(m);
+    }
+    return m;
 }
 
 } // namespace drum

@@ -9,6 +9,10 @@
 //                          # default $DRYER_PROJECT/etc/defaults/driftTables/driftTable.csv
 //     segmentTable: path   # drum-segment table (segmentTable.hpp), for segmentVc
 //     outside: refuse      # refuse (default) | clamp, queries outside the table
+//     scale: 1             # every drift multiplied by this factor, (0, 10]: an
+//                          # error band (dryerStudy: exp(+-RMS ln) of a route's scores)
+//     recordQueries: false # write results/driftQueries.csv: the least and largest
+//                          # value of every table axis the run asked (a table's grid)
 //     constants: path      # porousSheet constants; default
 //                          # $DRYER_PROJECT/etc/defaults/driftModels/porousSheet.yaml
 //     auto:                # with model.drift auto (autoDrift.hpp), optional
@@ -54,6 +58,11 @@ struct DriftSettings
     //- model table: answer the table's tunnel_drift_m (what Sherritt's wind
     //  tunnel would have recorded; windTunnelDrift's scoring) instead of drift_m
     bool tunnelReading = false;
+    //- every drift multiplied by this factor (drift.scale)
+    double scale = 1.0;
+    //- record the extent of the queries (drift.recordQueries): makeDriftModel
+    //  then returns a RecordingDrift
+    bool recordQueries = false;
 };
 
 //- InputError naming the table when its sweep gas differs from `gas` by more

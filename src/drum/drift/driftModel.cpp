@@ -1,12 +1,14 @@
 #include "drum/drift/driftModel.hpp"
-
 #include "drum/drift/driftDictionary.hpp"
+#include "drum/drift/driftTable.hpp"
 
 #include "drum/io/inputError.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace drum
@@ -84,6 +86,49 @@ std::shared_ptr<const DriftModel> makeDriftModel
     DriftSettings settings;
     settings.model = name;
     return makeDriftModel(settings, gas, law, entry);
+}
+
+
+void DriftQueryRange::add(const DriftQuery& q)
+{
+    const std::array<double, 6> x{q.gasVelocity, q.spillRate, q.fallHeight, q.flightLength, q.particleDensity,
+                                  q.particleDiameter};
+    for (std::size_t a = 0; a < x.size(); ++a)
+    {
+        lo[a] = count ? std::min(lo[a], x[a]) : x[a];
+        hi[a] = count ? std::max(hi[a], x[a]) : x[a];
+    }
+    ++count;
+}
+
+
+double RecordingDrift::displacement(const DriftQuery& q) const
+{
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        range_.add(q);
+    }
+    return inner_->displacement(q);
+}
+
+
+DriftQueryRange RecordingDrift::range() const
+{
+    const std::lock_guard<std::mutex> lock(mutex_);
+    return range_;
+}
+
+
+std::string RecordingDrift::rangeCsv() const
+{
+    const DriftQueryRange r = range();
+    std::ostringstream os;
+    os << std::setprecision(10) << "axis,min,max,queries\n";
+    for (int a = 0; a < 6; ++a)
+    {
+        os << driftAxisName(a) << ',' << r.lo[a] << ',' << r.hi[a] << ',' << r.count << '\n';
+    }
+    return os.str();
 }
 
 } // namespace drum

@@ -13,8 +13,10 @@
 #include "particleDrag/gasProperties.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
+#include <array>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <string>
 
 namespace drum
@@ -52,6 +54,51 @@ public:
     //- What a run should tell the user about this model's use (choices
     //  made, ranges left); empty by default
     virtual std::string summary() const { return {}; }
+};
+
+//- The extent of the queries a run made: per axis of the drift table (gas
+//  velocity, spill rate, fall height, flight length, particle density, particle
+//  diameter, driftTable.hpp's order) the least and the largest value asked
+struct DriftQueryRange
+{
+    std::array<double, 6> lo{}, hi{};
+    long count = 0;
+    void add(const DriftQuery& q);
+};
+
+//- Any model, each query's axes recorded in a DriftQueryRange (thread-safe):
+//  what a drift table for this run must cover (drift.recordQueries)
+class RecordingDrift : public DriftModel
+{
+public:
+    explicit RecordingDrift(std::shared_ptr<const DriftModel> inner) : inner_(std::move(inner)) {}
+    double displacement(const DriftQuery& q) const override;
+    std::string name() const override { return inner_->name(); }
+    std::string summary() const override { return inner_->summary(); }
+    //- The range so far
+    DriftQueryRange range() const;
+    //- range() as CSV: axis,min,max (the drift table's column names), then the query count
+    std::string rangeCsv() const;
+
+private:
+    std::shared_ptr<const DriftModel> inner_;
+    mutable std::mutex mutex_;
+    mutable DriftQueryRange range_;
+};
+
+//- Any model's drift multiplied by a factor (drift.scale): the error band of a
+//  drift model's measured error, e.g. exp(+-RMS ln) of the wind-tunnel scores
+class ScaledDrift : public DriftModel
+{
+public:
+    ScaledDrift(std::shared_ptr<const DriftModel> inner, double factor) : inner_(std::move(inner)), factor_(factor) {}
+    double displacement(const DriftQuery& q) const override { return factor_*inner_->displacement(q); }
+    std::string name() const override { return inner_->name(); }
+    std::string summary() const override { return inner_->summary(); }
+
+private:
+    std::shared_ptr<const DriftModel> inner_;
+    double factor_;
 };
 
 //- Lone particle in the mean gas velocity, V = V_g (Sherritt 1991 Eqs 13,

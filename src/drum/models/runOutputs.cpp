@@ -225,4 +225,14 @@ void writeTracerComparison
     say(line.str() + " (times in min; tracerComparison.csv)");
 }
 
+
+void writeDriftQueries(const DriftModel& drift, const fs::path& out)
+{
+    if (const auto* r = dynamic_cast<const RecordingDrift*>(&drift))
+    {
+        writeFileAtomically(out/"driftQueries.csv", r->rangeCsv());
+        say("the drift queries' extent per table axis: driftQueries.csv");
+    }
+}
+
 } // namespace drum

@@ -43,6 +43,10 @@ void writeTracerComparison
     const std::filesystem::path& out
 );
 
+//- driftQueries.csv: the extent of the drift queries of a RecordingDrift
+//  (drift.recordQueries), nothing for any other model
+void writeDriftQueries(const DriftModel& drift, const std::filesystem::path& out);
+
 //- The case's tracer, if it names one
 std::optional<MeasuredTracer> readTracer(const DrumCase& c);
 

@@ -333,3 +333,57 @@ TEST(FullDragParticleDrift, TheFallSpeedJoinsTheSlipAndDragSlowsTheFall)
     q.gasVelocity = 0;
     EXPECT_EQ(full->displacement(q), 0.0);
 }
+
+
+TEST(DriftDictionary, ScaleAndRecordedQueries)
+{
+    const fs::path dir = tmpDir();
+    auto read = [&](const std::string& yaml) { return readDriftSettings(YAML::Load(yaml), "drumDict", dir); };
+    DriftQuery q;
+    q.particleDiameter = 850e-6;
+    q.particleDensity = 1590;
+    q.gasVelocity = 1.2;
+    q.fallHeight = 3;
+    q.spillRate = 10;
+    q.flightLength = 1.133;
+    const auto plain = makeDriftModel(read("model: {drift: sherritt}\n"), air);
+    const auto scaled = makeDriftModel(read("model: {drift: sherritt}\ndrift: {scale: 1.4}\n"), air);
+    // the factor multiplies the model's own drift, nothing else
+    EXPECT_DOUBLE_EQ(scaled->displacement(q), 1.4*plain->displacement(q));
+    EXPECT_GT(plain->displacement(q), 0);
+
+    const auto rec = makeDriftModel(read("model: {drift: isolated}\ndrift: {recordQueries: true}\n"), air);
+    const auto* r = dynamic_cast<const RecordingDrift*>(rec.get());
+    ASSERT_NE(r, nullptr);
+    EXPECT_EQ(r->name(), "isolated");
+    EXPECT_EQ(r->range().count, 0);
+    const double d1 = rec->displacement(q);
+    DriftQuery q2 = q;
+    q2.fallHeight = 0.7;
+    q2.spillRate = 31;
+    rec->displacement(q2);
+    EXPECT_DOUBLE_EQ(d1, makeDriftModel(read("model: {drift: isolated}\n"), air)->displacement(q));
+    const DriftQueryRange range = r->range();
+    EXPECT_EQ(range.count, 2);
+    EXPECT_DOUBLE_EQ(range.lo[fallHeightAxis], 0.7);
+    EXPECT_DOUBLE_EQ(range.hi[fallHeightAxis], 3);
+    EXPECT_DOUBLE_EQ(range.lo[spillRateAxis], 10);
+    EXPECT_DOUBLE_EQ(range.hi[spillRateAxis], 31);
+    EXPECT_DOUBLE_EQ(range.lo[diameterAxis], 850e-6);
+    EXPECT_NE(r->rangeCsv().find("fall_height_m,0.7,3,2\n"), std::string::npos) << r->rangeCsv();
+
+    // bad entries name the entry and the range
+    for (const std::string bad : {"0", "-1", "11", "big"})
+    {
+        try
+        {
+            read("model: {drift: sherritt}\ndrift: {scale: " + bad + "}\n");
+            FAIL() << "scale " << bad << " accepted";
+        }
+        catch (const InputError& e)
+        {
+            EXPECT_NE(std::string(e.what()).find("drift.scale"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(read("model: {drift: sherritt}\ndrift: {recordQueries: maybe}\n"), InputError);
+}

@@ -358,6 +358,7 @@ void CompartmentDrumModel::runWith
               + " deg (feed end) to " + std::to_string(b.first) + "-" + std::to_string(b.second)
               + " deg (discharge end)");
         }
+        writeDriftQueries(*fp.drift, out);
     }
     else
     {

@@ -154,6 +154,7 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
     {
         say(note);
     }
+    writeDriftQueries(*tc.options.drift, out);
     if (r.cappedLength > 0)
     {
         std::ostringstream os;
