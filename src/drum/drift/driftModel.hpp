@@ -86,13 +86,21 @@ private:
     mutable DriftQueryRange range_;
 };
 
-//- Any model's drift multiplied by a factor (drift.scale): the error band of a
-//  drift model's measured error, e.g. exp(+-RMS ln) of the wind-tunnel scores
+//- Any model's gas drift multiplied by a factor (drift.scale): the error band of
+//  a drift model's measured error, e.g. exp(+-RMS ln) of the wind-tunnel scores.
+//  The free slide along an inclined drum (the displacement in still gas) is
+//  geometry, not drift, and is kept as it is.
 class ScaledDrift : public DriftModel
 {
 public:
     ScaledDrift(std::shared_ptr<const DriftModel> inner, double factor) : inner_(std::move(inner)), factor_(factor) {}
-    double displacement(const DriftQuery& q) const override { return factor_*inner_->displacement(q); }
+    double displacement(const DriftQuery& q) const override
+    {
+        DriftQuery still = q;
+        still.gasVelocity = 0;
+        const double slide = inner_->displacement(still);
+        return slide + factor_*(inner_->displacement(q) - slide);
+    }
     std::string name() const override { return inner_->name(); }
     std::string summary() const override { return inner_->summary(); }
 

@@ -351,6 +351,14 @@ TEST(DriftDictionary, ScaleAndRecordedQueries)
     // the factor multiplies the model's own drift, nothing else
     EXPECT_DOUBLE_EQ(scaled->displacement(q), 1.4*plain->displacement(q));
     EXPECT_GT(plain->displacement(q), 0);
+    // on an incline the free slide (the displacement in still gas) is kept
+    DriftQuery tilted = q, still = q;
+    tilted.incline = -0.05;
+    still.incline = -0.05;
+    still.gasVelocity = 0;
+    const double slide = plain->displacement(still);
+    EXPECT_LT(slide, 0);
+    EXPECT_NEAR(scaled->displacement(tilted), slide + 1.4*(plain->displacement(tilted) - slide), 1e-12);
 
     const auto rec = makeDriftModel(read("model: {drift: isolated}\ndrift: {recordQueries: true}\n"), air);
     const auto* r = dynamic_cast<const RecordingDrift*>(rec.get());

@@ -1,0 +1,144 @@
+"""main: dryerStudy's main: the description read (exit 2 on bad input, nothing run),
+the drift table planned from the drum model's own queries, swept (or an earlier
+sweep of the same inputs reused, or resumed), the drum model run on every route,
+and the report written. study.json is written last: a folder without it is not a
+finished study."""
+
+import hashlib
+import json
+import os
+import subprocess
+import sys
+import time
+
+from .. import PROJECT, options
+from ..errors import InputError, RunError, SchedulerError
+from ..files import WriteError, atomic_write
+from ..messages import sayer
+from . import plan, report, routes
+from .description import Description
+
+say = sayer("dryerStudy")
+FLAGS = {"-plan", "-yes"}
+VALUED = {"-dict", "-out", "-jobs"}
+DONE = "study.json"
+
+
+def _sweep(desc, study, g, out, jobs):
+    """The table of grid g in out/table: reused when the sweep dictionary is the
+    same as the finished one there, else swept (buildDriftTable resumes finished runs)."""
+    tdir = os.path.join(out, "table")
+    os.makedirs(tdir, exist_ok=True)
+    table = os.path.join(tdir, "driftTable.csv")
+    text = plan.sweep_dict(g, desc, study, table)
+    sig = hashlib.sha256(text.encode()).hexdigest()
+    sig_file = os.path.join(tdir, "driftTable.inputs")
+    if os.path.isfile(table) and os.path.isfile(sig_file) and open(sig_file).read().strip() == sig:
+        say("the drift table of these inputs is there already: %s (reused)" % table)
+        return table, None
+    if os.path.exists(sig_file):
+        os.remove(sig_file)
+    atomic_write(os.path.join(tdir, "sweepDict"), text)
+    t0 = time.time()
+    rc = subprocess.run(["buildDriftTable", "-dict", os.path.join(tdir, "sweepDict"), "-jobs", str(jobs)]).returncode
+    if rc != 0:
+        raise RunError("the sweep did not finish (buildDriftTable exit %d; rerun the same command to resume)" % rc)
+    atomic_write(sig_file, sig + "\n")
+    return table, time.time() - t0
+
+
+def _curtain(g, desc, study, out):
+    """One curtain of the table kept and pictured (the middle grid point, the highest floor)."""
+    cdir = os.path.join(out, "curtain")
+    V = g["gasVelocity"][len(g["gasVelocity"]) // 2]
+    S = g["spillRate"][len(g["spillRate"]) // 2]
+    Y = g["floors"][-1]
+    gas = desc.sections["gas"]
+    args = ["curtainCase", "-dir", cdir, "-gasVelocity", "%g" % V, "-spillRate", "%g" % S, "-fallHeight", "%g" % Y,
+            "-flightLength", "%g" % g["flightLength"][0], "-density", "%g" % g["particleDensity"][0],
+            "-diameters", ",".join("%g" % d for d in g["diameter"]),
+            "-fractions", ",".join("%.8g" % w for w in g["massFractions"]), "-level", study["level"],
+            "-gasTemperature", "%g" % float(gas.get("temperature_C", 20.0)),
+            "-boxWidth", "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0), "-keep",
+            "-template", os.path.join(PROJECT, g["template"])]
+    with open(os.path.join(out, "log.curtain"), "w") as log:
+        if subprocess.run(args, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+            return None
+        if subprocess.run(["plotCurtain", "-case", os.path.join(cdir, "case"), "-out", os.path.join(out, "curtain.png"),
+                           "-noVTK"], stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+            return None
+    return "One curtain of the table: V_g %g m/s, spill %g kg/(m s), fall %g m (curtain/, plotCurtain)." % (V, S, Y)
+
+
+def run(opts):
+    desc = Description(opts["-dict"])
+    study = desc.study
+    out = os.path.abspath(opts["-out"])
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise InputError("-out %s is a file, not a folder" % out)
+    jobs = opts.get("-jobs", "1")
+    if not jobs.isdigit() or not 1 <= int(jobs) <= 256:
+        raise InputError("-jobs = '%s' outside the allowed range [1, 256] (whole number)" % jobs)
+    os.makedirs(out, exist_ok=True)
+    for mine in (DONE, "report.html"):      # never left looking finished while it is not
+        if os.path.exists(os.path.join(out, mine)):
+            os.remove(os.path.join(out, mine))
+    q = plan.queries(desc, os.path.join(out, "plan"), say)
+    info = {"queries": q, "estimate_s": 0.0, "runs": 0}
+    if study["table"]:
+        table, wall = study["table"], None
+        say("the drift table is the description's: %s (no sweep)" % table)
+        g = None
+    else:
+        g = plan.grid(q, desc, study)
+        miss = plan.covers(g, q)
+        if miss:
+            raise RunError("the planned grid misses the queries on %s" % ", ".join(miss))
+        info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
+                    grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
+        say("plan: %d curtain runs (V_g %s m/s x spill %s kg/(m s) x floors %s m), about %.0f s of CPU"
+            % (info["runs"], g["gasVelocity"], g["spillRate"], g["floors"], info["estimate_s"]))
+        atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+        if opts.get("-plan"):
+            say("-plan: nothing swept; the plan is in %s" % os.path.join(out, "plan.json"))
+            return 0
+        if info["estimate_s"] > study["confirmAbove_s"] and not opts.get("-yes"):
+            say("the sweep would take about %.0f s of CPU, above study.confirmAbove_s %g s: give -yes to run it"
+                % (info["estimate_s"], study["confirmAbove_s"]))
+            return 3
+        table, wall = _sweep(desc, study, g, out, int(jobs))
+    rows, e = routes.run_routes(desc, table, os.path.join(out, "routes"), say)
+    routes.write_routes(rows, os.path.join(out, "routes.csv"))
+    subprocess.run(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
+    curtain = _curtain(g, desc, study, out) if g else None
+    gas = desc.sections["gas"]
+    planned = {"runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
+               "wall_s": wall or 0.0, "source": "the description's" if study["table"] else "reused",
+               "level": study["level"], "box": "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0),
+               "gas_t": "%g" % float(gas.get("temperature_C", 20.0)),
+               "gas": g and " ".join("%g" % v for v in g["gasVelocity"]),
+               "spill": g and " ".join("%g" % v for v in g["spillRate"]),
+               "falls": g and " ".join("%g" % v for v in g["floors"]),
+               "classes": len(desc.sections["material"]["sizes_um"]),
+               "queries": "; ".join("%s %.4g-%.4g" % (k, v[0], v[1]) for k, v in q.items())}
+    report.write(desc, out, rows, e, routes.error_band()[1], planned, curtain)
+    atomic_write(os.path.join(out, DONE), json.dumps({"description": desc.path, "table": table,
+                                                      "routes": rows, "plan": info}, indent=1) + "\n")
+    say("report: %s" % os.path.join(out, "report.html"))
+    return 0
+
+
+def main(argv, usage):
+    try:
+        opts = options.parse(argv, FLAGS, VALUED, ("-dict", "-out"), "dryerStudy", usage)
+        return run(opts)
+    except InputError as e:
+        print("dryerStudy: bad input: %s" % e, file=sys.stderr)
+        return 2
+    except (RunError, SchedulerError, WriteError, OSError) as e:
+        print("dryerStudy: FAILED: %s" % e, file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("dryerStudy: interrupted; rerun the same command to go on (finished curtain runs are kept)",
+              file=sys.stderr)
+        return 130

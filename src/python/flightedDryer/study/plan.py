@@ -1,0 +1,168 @@
+"""plan: the drift table a dryer needs. The drum model is run once with Eq 142 and
+drift.recordQueries, which gives the least and largest value of every table axis
+it asks (its own unloading, falls and gas velocity); the grid reaches beyond them
+by the study's margin, each fall on a floor of its own (a curtain ends on the bed),
+in a box as wide as the drum, in the dryer's gas. The CPU estimate counts each
+run's cells from the template's mesh level."""
+
+import csv
+import math
+import os
+import subprocess
+
+from .. import PROJECT, facts, foamDictionary
+from ..errors import InputError
+from ..files import atomic_write
+
+TEMPLATES = os.path.join(PROJECT, "etc", "templates", "curtain")
+# drums up to this diameter are laboratory or pilot scale: their falls are below
+# what the wind-tunnel template resolves, and the laboratory-drum template (falls
+# to 2 m) serves them
+LAB_DRUM_DIAMETER = 2.0
+# CPU per cell and iteration, and per run (set-up, blockMesh, the steady check),
+# of a coarse curtainFoam run: tutorials/curtain/windTunnel/results/meshStudy.csv
+# (steady_cpu_s over cells x steady_iterations) and the tools' own start-up
+MESH_STUDY = os.path.join(PROJECT, "tutorials", "curtain", "windTunnel", "results", "meshStudy.csv")
+RUN_OVERHEAD_S = 2.0
+
+
+def queries(desc, work, say):
+    """{axis: (least, largest)} of the drift queries of the drum model on the
+    description (drift sherritt, recordQueries); InputError naming the description
+    on anything drumSolver refuses."""
+    case = os.path.join(work, "planner")
+    os.makedirs(case, exist_ok=True)
+    atomic_write(os.path.join(case, "drumDict"), desc.drum_dict("sherritt", {"recordQueries": True}))
+    r = subprocess.run(["drumSolver", "-case", case], capture_output=True, text=True)
+    if r.returncode != 0:
+        msg = (r.stderr or r.stdout).strip().replace(os.path.join(case, "drumDict"), desc.path)
+        raise InputError(msg.replace("drumSolver: input error: ", ""))
+    path = os.path.join(case, "results", "driftQueries.csv")
+    if not os.path.isfile(path):
+        raise InputError("%s: the drum model makes no drift queries (its flights release no curtains): "
+                         "nothing for a drift table to serve" % desc.path)
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    say("the drum model's drift queries (Eq 142 pass): " + ", ".join(
+        "%s %.4g-%.4g" % (r["axis"], float(r["min"]), float(r["max"])) for r in rows))
+    return {r["axis"]: (float(r["min"]), float(r["max"])) for r in rows}
+
+
+def template(desc):
+    """The curtain template of the dryer's scene: the wind tunnel's box (made as
+    wide as the drum), or for a laboratory or pilot drum the laboratory-drum channel."""
+    name = "labDrum" if float(desc.sections["drum"]["diameter"]) <= LAB_DRUM_DIAMETER else "windTunnel"
+    return os.path.join("etc", "templates", "curtain", name)
+
+
+def _level(tpl, level):
+    """The template's mesh entries of a level (nx, nz counts, ny and the height H)."""
+    ml = os.path.join(PROJECT, tpl, "system", "meshLevels")
+    keys = ("nxUp", "nxSlot", "nxDown", "ny", "nzSheet", "nzOut")
+    v = {k: float(foamDictionary.value(ml, "levels/%s/%s" % (level, k))) for k in keys}
+    v["H"] = foamDictionary.scalar(os.path.join(PROJECT, tpl, "system", "meshParameters"), "H")
+    return v
+
+
+def _log_nodes(lo, hi, ratio):
+    """Nodes from lo to hi, evenly in ln, neighbours at most `ratio` apart."""
+    if hi <= lo * (1 + 1e-9):
+        return [lo]
+    n = max(1, math.ceil(math.log(hi / lo) / math.log(ratio)))
+    return [lo * (hi / lo) ** (k / n) for k in range(n + 1)]
+
+
+def _round(v):
+    return float("%.3g" % v)
+
+
+def grid(q, desc, study):
+    """The sweep's grid: gas velocity, spill rate, fall height (every fall a floor),
+    the material's classes and density, the flight stagger."""
+    m = study["margin"]
+    tpl = template(desc)
+    level = _level(tpl, study["level"])
+    dy = level["H"] / level["ny"]
+    D = float(desc.sections["drum"]["diameter"])
+    vlo, vhi = q["gas_velocity_m_s"]
+    slo, shi = q["spill_rate_kg_m_s"]
+    ylo, yhi = q["fall_height_m"]
+    gas = sorted({_round(v) for v in (vlo / (1 + m), vhi * (1 + m))})
+    spill = sorted({_round(v) for v in _log_nodes(slo / (1 + m), min(shi * (1 + m), facts.max_spill_rate()),
+                                                  study["spillRatio"])})
+    top = min(yhi * (1 + m), D, level["H"])
+    bottom = max(ylo / (1 + m), 2.05 * dy)
+    if top <= bottom:
+        raise InputError("%s: the falls %g-%g m lie below what the %s mesh resolves (%.3g m)"
+                         % (desc.path, ylo, yhi, study["level"], 2.05 * dy))
+    nf = max(2, math.ceil((top - bottom) / study["fallStep"]) + 1)
+    falls = sorted({_round(bottom + (top - bottom) * k / (nf - 1)) for k in range(nf)})
+    d = sorted({float("%.6g" % v) for v in (q["particle_diameter_m"])})
+    mat = desc.sections["material"]
+    sph = float(mat.get("sphericity", 1.0))
+    sizes = [float("%.6g" % (s * 1e-6 * sph)) for s in mat["sizes_um"]]
+    fractions = [float(x) / 100.0 for x in mat["fractions_pct"]]
+    if min(sizes) > d[0] * (1 + 1e-6) or max(sizes) < d[-1] * (1 - 1e-6):
+        raise InputError("%s: the drum model asks diameters %g-%g m outside the material's classes %g-%g m"
+                         % (desc.path, d[0], d[-1], min(sizes), max(sizes)))
+    return {"gasVelocity": gas, "spillRate": spill, "flightLength": [_round(q["flight_length_m"][0])],
+            "particleDensity": [q["particle_density_kg_m3"][0]], "fallHeight": falls,
+            "diameter": sizes, "massFractions": fractions, "floors": falls, "level": level, "dy": dy,
+            "template": tpl}
+
+
+def covers(g, q):
+    """The axes on which the grid misses a query (empty: it covers them all)."""
+    miss = []
+    for axis, key in (("gas_velocity_m_s", "gasVelocity"), ("spill_rate_kg_m_s", "spillRate"),
+                      ("fall_height_m", "fallHeight")):
+        lo, hi = q[axis]
+        # below the smallest fall the table anchors the drift to 0 at y = 0
+        if (key != "fallHeight" and lo < g[key][0] * (1 - 1e-9)) or hi > g[key][-1] * (1 + 1e-9):
+            miss.append(axis)
+    return miss
+
+
+def runs(g):
+    """The number of curtain runs: a grid point per gas velocity and spill, a run per floor."""
+    return len(g["gasVelocity"]) * len(g["spillRate"]) * len(g["floors"])
+
+
+def cpu_estimate_s(g, study):
+    """The sweep's CPU time: each run's cells (the level's counts, the height scaled
+    to its floor) times the iterations to a steady drift (about half the limit,
+    where the steady check first looks) at the mesh study's cost per cell and
+    iteration, plus a start-up per run."""
+    with open(MESH_STUDY, newline="") as f:
+        coarse = [r for r in csv.DictReader(f) if r["level"] == "coarse"][0]
+    k = float(coarse["steady_cpu_s"]) / (float(coarse["cells"]) * float(coarse["steady_iterations"]))
+    lv = g["level"]
+    per_m = (lv["nxUp"] + lv["nxSlot"] + lv["nxDown"]) * (lv["nzSheet"] + lv["nzOut"]) / g["dy"]
+    points = len(g["gasVelocity"]) * len(g["spillRate"])
+    its = study["iterations"] / 2.0
+    return points * sum(RUN_OVERHEAD_S + k * per_m * y * its for y in g["floors"])
+
+
+def _list(values, form="%.6g"):
+    return "(" + " ".join(form % v for v in values) + ")"
+
+
+def sweep_dict(g, desc, study, output):
+    """The buildDriftTable dictionary of the grid."""
+    gas = desc.sections["gas"]
+    lines = ["FoamFile { version 2.0; format ascii; class dictionary; object dryerStudyTable; }",
+             "// written by dryerStudy from %s" % desc.path,
+             'template "%s";' % g["template"], "level %s;" % study["level"],
+             "iterations %d;" % study["iterations"],
+             "gasTemperature %.6g;" % float(gas.get("temperature_C", 20.0))]
+    if "pressure_kPa" in gas:
+        lines.append("gasPressure %.6g;" % float(gas["pressure_kPa"]))
+    lines += ["boxWidth %.6g;" % min(float(desc.sections["drum"]["diameter"]), 20.0),
+              "grid", "{",
+              "    gasVelocity %s;" % _list(g["gasVelocity"]), "    spillRate %s;" % _list(g["spillRate"]),
+              "    flightLength %s;" % _list(g["flightLength"]),
+              "    particleDensity %s;" % _list(g["particleDensity"]),
+              "    fallHeight %s;" % _list(g["fallHeight"]), "    diameter %s;" % _list(g["diameter"]), "}",
+              "massFractions %s;" % _list(g["massFractions"], "%.8g"), "floors %s;" % _list(g["floors"]),
+              'output "%s";' % output, 'work "%s";' % os.path.join(os.path.dirname(output), "work")]
+    return "\n".join(lines) + "\n"

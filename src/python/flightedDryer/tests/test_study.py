@@ -1,0 +1,69 @@
+"""study: a description is read strictly (a key given twice, an unknown section or
+study entry, a value out of range, model.drift set by hand: each refused naming the
+file and the entry); the grid of a plan covers the queries it was made from."""
+
+import pytest
+
+from flightedDryer.errors import InputError
+from flightedDryer.study import plan
+from flightedDryer.study.description import Description
+
+GOOD = """drum: {length: 12, diameter: 5, slope_deg: 2.8, speed_rpm: 3}
+flights: {count: 28, baseLength: 0.195, tipLength: 0.183, baseAngle_deg: 90, tipAngle_deg: 117, axialLength: 1.133}
+material: {feedRate: 27.2, bulkDensity: 940, particleDensity: 1590, sizes_um: [600, 900], fractions_pct: [40, 60]}
+gas: {flow: counterCurrent, massRate: 20, temperature_C: 80}
+"""
+
+
+def write(tmp_path, text):
+    p = tmp_path / "dryer.yaml"
+    p.write_text(text)
+    return str(p)
+
+
+def test_defaults_are_named(tmp_path):
+    d = Description(write(tmp_path, GOOD))
+    entries = [e for e, _, _ in d.defaults]
+    assert "model" in entries and "rtd" in entries and "study.level" in entries
+    assert d.sections["model"]["type"] == "compartment" and d.study["margin"] == 0.25
+    text = d.drum_dict("table", {"table": "/t.csv", "scale": 1.4})
+    assert "drift: table" in text and "scale: 1.4" in text and "study" not in text
+
+
+@pytest.mark.parametrize("extra,match", [
+    ("gas: {flow: coCurrent}\n", r"dryer.yaml:5: entry 'gas' given twice \(first on line 4\)"),
+    ("studdy: {level: coarse}\n", r"dryer.yaml:5: unknown section 'studdy' \(did you mean 'study'\?\)"),
+    ("study: {levl: fine}\n", r"entry 'study.levl': unknown \(did you mean 'study.level'\?\)"),
+    ("study: {margin: 5}\n", r"entry 'study.margin' = 5 outside the allowed range \[0, 2\]"),
+    ("study: {scene: drumSegment}\n", r"entry 'study.scene' = 'drumSegment' is not one of box"),
+    ("study: {table: nothere.csv}\n", r"entry 'study.table': no such table"),
+    ("model: {type: compartment, drift: table}\n", r"entry 'model.drift': the study sets the drift per route"),
+])
+def test_bad_descriptions_are_refused_naming_the_entry(tmp_path, extra, match):
+    with pytest.raises(InputError, match=match):
+        Description(write(tmp_path, GOOD + extra))
+
+
+def test_a_missing_section_or_bad_yaml_is_refused(tmp_path):
+    with pytest.raises(InputError, match=r"section 'gas' is missing"):
+        Description(write(tmp_path, GOOD.replace("gas: {flow: counterCurrent, massRate: 20, temperature_C: 80}\n", "")))
+    with pytest.raises(InputError, match=r"not YAML"):
+        Description(write(tmp_path, GOOD + "study: {level: [\n"))
+
+
+def test_the_grid_covers_its_queries(tmp_path):
+    d = Description(write(tmp_path, GOOD))
+    q = {"gas_velocity_m_s": (1.0, 1.0), "spill_rate_kg_m_s": (4.9, 29.4), "fall_height_m": (1.16, 4.7),
+         "flight_length_m": (1.133, 1.133), "particle_density_kg_m3": (1590, 1590),
+         "particle_diameter_m": (6e-4, 9e-4)}
+    g = plan.grid(q, d, d.study)
+    assert plan.covers(g, q) == []
+    assert g["floors"] == g["fallHeight"] and g["floors"][-1] <= 5
+    assert g["spillRate"][0] < 4.9 and g["spillRate"][-1] > 29.4
+    assert all(b / a <= 3.0 * 1.01 for a, b in zip(g["spillRate"], g["spillRate"][1:]))
+    assert g["template"].endswith("windTunnel") and plan.runs(g) == 2 * len(g["spillRate"]) * len(g["floors"])
+    assert plan.cpu_estimate_s(g, d.study) > 0
+    q["spill_rate_kg_m_s"] = (4.9, 900.0)
+    assert plan.covers(g, q) == ["spill_rate_kg_m_s"]
+    text = plan.sweep_dict(g, d, d.study, str(tmp_path / "t.csv"))
+    assert "boxWidth 5;" in text and "gasTemperature 80;" in text and "floors (" in text
