@@ -154,7 +154,6 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
     {
         say(note);
     }
-    writeDriftQueries(*tc.options.drift, out);
     if (r.cappedLength > 0)
     {
         std::ostringstream os;
@@ -338,6 +337,8 @@ void TwoPhaseDrumModel::run(const fs::path& out) const
        << ex.mean/60 << "), RTD SD " << sm.sd()/60 << " min";
     os << measuredNote(mm);
     say(os.str());
+    // every query of the run, the DRUM1 sweep's too
+    writeDriftQueries(*tc.options.drift, out);
 }
 
 } // namespace drum

@@ -41,6 +41,9 @@ def _sweep(desc, study, g, out, jobs):
     atomic_write(os.path.join(tdir, "sweepDict"), text)
     t0 = time.time()
     rc = subprocess.run(["buildDriftTable", "-dict", os.path.join(tdir, "sweepDict"), "-jobs", str(jobs)]).returncode
+    if rc == 2:
+        raise RunError("buildDriftTable refused the planned sweep (%s): see its message above"
+                       % os.path.join(tdir, "sweepDict"))
     if rc != 0:
         raise RunError("the sweep did not finish (buildDriftTable exit %d; rerun the same command to resume)" % rc)
     atomic_write(sig_file, sig + "\n")
@@ -83,7 +86,7 @@ def run(opts):
     for mine in (DONE, "report.html"):      # never left looking finished while it is not
         if os.path.exists(os.path.join(out, mine)):
             os.remove(os.path.join(out, mine))
-    q = plan.queries(desc, os.path.join(out, "plan"), say)
+    q = plan.queries(desc, os.path.join(out, "plan", "planner"), say)
     info = {"queries": q, "estimate_s": 0.0, "runs": 0}
     if study["table"]:
         table, wall = study["table"], None
@@ -106,14 +109,40 @@ def run(opts):
             say("the sweep would take about %.0f s of CPU, above study.confirmAbove_s %g s: give -yes to run it"
                 % (info["estimate_s"], study["confirmAbove_s"]))
             return 3
-        table, wall = _sweep(desc, study, g, out, int(jobs))
+        # the table's own routes may ask beyond what the Eq 142 pass asked (the drum
+        # model's state follows its drift): each is run on the table (clamped,
+        # recorded), and the grid widened and swept again until it covers them
+        e, _ = routes.error_band()
+        wall = 0.0
+        for attempt in range(4):
+            table, took = _sweep(desc, study, g, out, int(jobs))
+            wall += took or 0.0
+            asked = q
+            for name, drift, section in routes.route_settings(table, e):
+                if drift == "table":
+                    asked = plan.union(asked, plan.queries(
+                        desc, os.path.join(out, "plan", "check%d" % attempt, name), say, drift,
+                        dict(section, outside="clamp"), "route %s on the table" % name))
+            miss = plan.covers(g, asked)
+            if not miss:
+                break
+            if attempt == 3:
+                raise RunError("the table's routes still ask beyond its grid on %s after 3 widenings"
+                               % ", ".join(miss))
+            say("the routes ask beyond the grid on %s: widening it" % ", ".join(miss))
+            q = asked
+            g = plan.grid(q, desc, study)
+            info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
+                        grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
+            atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+        wall = wall or None
     rows, e = routes.run_routes(desc, table, os.path.join(out, "routes"), say)
     routes.write_routes(rows, os.path.join(out, "routes.csv"))
     subprocess.run(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
     curtain = _curtain(g, desc, study, out) if g else None
     gas = desc.sections["gas"]
     planned = {"runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
-               "wall_s": wall or 0.0, "source": "the description's" if study["table"] else "reused",
+               "wall_s": wall or 0.0, "source": table,
                "level": study["level"], "box": "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0),
                "gas_t": "%g" % float(gas.get("temperature_C", 20.0)),
                "gas": g and " ".join("%g" % v for v in g["gasVelocity"]),

@@ -26,13 +26,12 @@ MESH_STUDY = os.path.join(PROJECT, "tutorials", "curtain", "windTunnel", "result
 RUN_OVERHEAD_S = 2.0
 
 
-def queries(desc, work, say):
+def queries(desc, case, say, drift="sherritt", section=None, what="Eq 142 pass"):
     """{axis: (least, largest)} of the drift queries of the drum model on the
-    description (drift sherritt, recordQueries); InputError naming the description
-    on anything drumSolver refuses."""
-    case = os.path.join(work, "planner")
+    description with the drift route given (drift.recordQueries on; default Eq 142),
+    run in `case`; InputError naming the description on anything drumSolver refuses."""
     os.makedirs(case, exist_ok=True)
-    atomic_write(os.path.join(case, "drumDict"), desc.drum_dict("sherritt", {"recordQueries": True}))
+    atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, dict(section or {}, recordQueries=True)))
     r = subprocess.run(["drumSolver", "-case", case], capture_output=True, text=True)
     if r.returncode != 0:
         msg = (r.stderr or r.stdout).strip().replace(os.path.join(case, "drumDict"), desc.path)
@@ -43,9 +42,14 @@ def queries(desc, work, say):
                          "nothing for a drift table to serve" % desc.path)
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    say("the drum model's drift queries (Eq 142 pass): " + ", ".join(
-        "%s %.4g-%.4g" % (r["axis"], float(r["min"]), float(r["max"])) for r in rows))
+    say("the drum model's drift queries (%s): %s" % (what, ", ".join(
+        "%s %.4g-%.4g" % (r["axis"], float(r["min"]), float(r["max"])) for r in rows)))
     return {r["axis"]: (float(r["min"]), float(r["max"])) for r in rows}
+
+
+def union(a, b):
+    """The extent of two sets of queries."""
+    return {k: (min(a[k][0], b[k][0]), max(a[k][1], b[k][1])) for k in a}
 
 
 def template(desc):
@@ -100,12 +104,15 @@ def grid(q, desc, study):
     d = sorted({float("%.6g" % v) for v in (q["particle_diameter_m"])})
     mat = desc.sections["material"]
     sph = float(mat.get("sphericity", 1.0))
-    sizes = [float("%.6g" % (s * 1e-6 * sph)) for s in mat["sizes_um"]]
-    fractions = [float(x) / 100.0 for x in mat["fractions_pct"]]
+    # the table's diameters increase; each class keeps its mass fraction
+    pairs = sorted(zip((float("%.6g" % (s * 1e-6 * sph)) for s in mat["sizes_um"]),
+                       (float(x) / 100.0 for x in mat["fractions_pct"])))
+    # normalised, as the drum model takes them (a printed distribution may sum to 99.8 %)
+    sizes, fractions = [p[0] for p in pairs], [p[1] / sum(p[1] for p in pairs) for p in pairs]
     if min(sizes) > d[0] * (1 + 1e-6) or max(sizes) < d[-1] * (1 - 1e-6):
         raise InputError("%s: the drum model asks diameters %g-%g m outside the material's classes %g-%g m"
                          % (desc.path, d[0], d[-1], min(sizes), max(sizes)))
-    return {"gasVelocity": gas, "spillRate": spill, "flightLength": [_round(q["flight_length_m"][0])],
+    return {"gasVelocity": gas, "spillRate": spill, "flightLength": [float("%.8g" % q["flight_length_m"][0])],
             "particleDensity": [q["particle_density_kg_m3"][0]], "fallHeight": falls,
             "diameter": sizes, "massFractions": fractions, "floors": falls, "level": level, "dy": dy,
             "template": tpl}
