@@ -22,7 +22,11 @@ STUDY_KEYS = {
     "fallStep": (1.0, (0.05, 10.0), "m between the table's fall heights (each a floor)"),
     "spillRatio": (3.0, (1.5, 100.0), "largest ratio of neighbouring spill rates of the table's grid"),
     "confirmAbove_s": (1800.0, (0.0, 1e7), "planned CPU time above which -yes is needed"),
+    "curve": (None, None, "an operating curve: one input of the drum model over a list of values"),
 }
+# the inputs an operating curve may vary (section.key of the drum model's sections)
+CURVE_ENTRIES = ("gas.massRate", "gas.temperature_C", "material.feedRate", "drum.speed_rpm", "drum.slope_deg",
+                 "flights.count")
 # the compartment model the study runs when the description names none: Lee's
 # network from the flight geometry, as cases/invictaDryer/physics
 COMPARTMENT_DEFAULTS = [("type", "compartment"), ("slices", 20), ("partition", "flightModel"),
@@ -123,6 +127,8 @@ class Description:
                 if isinstance(v, bool) or not isinstance(v, (int, float)) or not check[0] <= v <= check[1]:
                     raise InputError("%s = %s outside the allowed range [%g, %g]"
                                      % (self.where("study." + key), v, check[0], check[1]))
+            elif key == "curve":
+                v = self._curve(v)
             elif key == "table":
                 v = os.path.normpath(os.path.join(PROJECT if str(v).startswith("$DRYER_PROJECT") else
                                                   os.path.dirname(self.path),
@@ -131,6 +137,24 @@ class Description:
                     raise InputError("%s: no such table %s" % (self.where("study.table"), v))
             out[key] = v
         return out
+
+    def _curve(self, v):
+        """study.curve: {entry: SECTION.KEY, values: [...]}: the entry one the drum
+        model has in this description, 2 to 20 numbers."""
+        if not isinstance(v, dict) or set(v) != {"entry", "values"}:
+            raise InputError("%s must be {entry: SECTION.KEY, values: [v1, v2, ...]}" % self.where("study.curve"))
+        entry, values = v["entry"], v["values"]
+        if entry not in CURVE_ENTRIES:
+            raise InputError("%s = '%s' is not one of %s" % (self.where("study.curve.entry"), entry,
+                                                             " ".join(CURVE_ENTRIES)))
+        section, key = entry.split(".")
+        if not isinstance(self.sections.get(section), dict) or key not in self.sections[section]:
+            raise InputError("%s = '%s': the description has no %s to vary" % (self.where("study.curve.entry"),
+                                                                              entry, entry))
+        if (not isinstance(values, list) or not 2 <= len(values) <= 20
+                or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in values)):
+            raise InputError("%s must be a list of 2 to 20 numbers" % self.where("study.curve.values"))
+        return {"entry": entry, "values": [float(x) for x in values]}
 
     def _model(self):
         m = self.sections.get("model")
@@ -159,10 +183,15 @@ class Description:
             if not f.startswith("$DRYER_"):
                 tracer["file"] = os.path.normpath(os.path.join(os.path.dirname(self.path), f))
 
-    def drum_dict(self, drift, drift_section):
+    def drum_dict(self, drift, drift_section, override=None):
         """The drumDict text of one route: the description's sections with
-        model.drift and the drift section the route sets."""
+        model.drift and the drift section the route sets (and, on an operating
+        curve, override = (SECTION.KEY, value))."""
         sections = {k: (dict(v) if isinstance(v, dict) else v) for k, v in self.sections.items()}
+        if override:
+            section, key = override[0].split(".")
+            value = override[1]
+            sections[section][key] = int(value) if key == "count" else value
         sections["model"]["drift"] = drift
         if drift_section:
             sections["drift"] = drift_section

@@ -86,7 +86,13 @@ def run(opts):
     for mine in (DONE, "report.html"):      # never left looking finished while it is not
         if os.path.exists(os.path.join(out, mine)):
             os.remove(os.path.join(out, mine))
+    curve = study["curve"]
+    points = [None] + ([(curve["entry"], v) for v in curve["values"]] if curve else [])
     q = plan.queries(desc, os.path.join(out, "plan", "planner"), say)
+    for k, pt in enumerate(points[1:]):
+        # one table serves the whole curve: the grid covers every point's queries
+        q = plan.union(q, plan.queries(desc, os.path.join(out, "plan", "curve%d" % k), say,
+                                       what="Eq 142 pass, %s %g" % pt, override=pt))
     info = {"queries": q, "estimate_s": 0.0, "runs": 0}
     if study["table"]:
         table, wall = study["table"], None
@@ -118,11 +124,13 @@ def run(opts):
             table, took = _sweep(desc, study, g, out, int(jobs))
             wall += took or 0.0
             asked = q
-            for name, drift, section in routes.route_settings(table, e):
-                if drift == "table":
-                    asked = plan.union(asked, plan.queries(
-                        desc, os.path.join(out, "plan", "check%d" % attempt, name), say, drift,
-                        dict(section, outside="clamp"), "route %s on the table" % name))
+            for k, pt in enumerate(points):
+                for name, drift, section in routes.route_settings(table, e):
+                    if drift == "table":
+                        asked = plan.union(asked, plan.queries(
+                            desc, os.path.join(out, "plan", "check%d" % attempt, "%s%d" % (name, k)), say, drift,
+                            dict(section, outside="clamp"), "route %s on the table%s"
+                            % (name, ", %s %g" % pt if pt else ""), override=pt))
             miss = plan.covers(g, asked)
             if not miss:
                 break
@@ -138,6 +146,13 @@ def run(opts):
         wall = wall or None
     rows, e = routes.run_routes(desc, table, os.path.join(out, "routes"), say)
     routes.write_routes(rows, os.path.join(out, "routes.csv"))
+    curve_rows = []
+    for k, pt in enumerate(points[1:]):
+        r, _ = routes.run_routes(desc, table, os.path.join(out, "curve", "%d" % k), say, override=pt)
+        curve_rows += [dict(row, value=pt[1]) for row in r]
+    if curve_rows:
+        routes.write_routes(curve_rows, os.path.join(out, "curve.csv"), ["value"])
+        report.curve_figure(curve_rows, curve["entry"], os.path.join(out, "curve.png"))
     subprocess.run(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
     curtain = _curtain(g, desc, study, out) if g else None
     gas = desc.sections["gas"]
@@ -150,7 +165,7 @@ def run(opts):
                "falls": g and " ".join("%g" % v for v in g["floors"]),
                "classes": len(desc.sections["material"]["sizes_um"]),
                "queries": "; ".join("%s %.4g-%.4g" % (k, v[0], v[1]) for k, v in q.items())}
-    report.write(desc, out, rows, e, routes.error_band()[1], planned, curtain)
+    report.write(desc, out, rows, e, routes.error_band()[1], planned, curtain, curve and curve["entry"])
     atomic_write(os.path.join(out, DONE), json.dumps({"description": desc.path, "table": table,
                                                       "routes": rows, "plan": info}, indent=1) + "\n")
     say("report: %s" % os.path.join(out, "report.html"))

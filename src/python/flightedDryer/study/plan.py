@@ -26,12 +26,13 @@ MESH_STUDY = os.path.join(PROJECT, "tutorials", "curtain", "windTunnel", "result
 RUN_OVERHEAD_S = 2.0
 
 
-def queries(desc, case, say, drift="sherritt", section=None, what="Eq 142 pass"):
+def queries(desc, case, say, drift="sherritt", section=None, what="Eq 142 pass", override=None):
     """{axis: (least, largest)} of the drift queries of the drum model on the
     description with the drift route given (drift.recordQueries on; default Eq 142),
     run in `case`; InputError naming the description on anything drumSolver refuses."""
     os.makedirs(case, exist_ok=True)
-    atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, dict(section or {}, recordQueries=True)))
+    atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, dict(section or {}, recordQueries=True),
+                                                                override))
     r = subprocess.run(["drumSolver", "-case", case], capture_output=True, text=True)
     if r.returncode != 0:
         msg = (r.stderr or r.stdout).strip().replace(os.path.join(case, "drumDict"), desc.path)

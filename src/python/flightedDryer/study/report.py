@@ -78,7 +78,33 @@ def rtd_figure(work, desc, out):
     files.save_figure(fig, out, 100)
 
 
-def write(desc, study_dir, rows, error, error_source, plan, curtain_note):
+def curve_figure(rows, entry, out):
+    """curve.png: holdup, mean residence time (with the error band) and the RTD's
+    quantiles of every route against the curve's input."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axs = plt.subplots(1, 3, figsize=(15, 4.5))
+    values = sorted({r["value"] for r in rows})
+    pick = lambda route, col: [next(r[col] for r in rows if r["route"] == route and r["value"] == v) for v in values]
+    axs[1].fill_between(values, pick("tableLow", "mean_residence_time_min"), pick("tableHigh", "mean_residence_time_min"),
+                        color="tab:blue", alpha=0.2, label="CFD table, error band")
+    for name, style in (("table", "-o"), ("sherritt", "--s"), ("isolated", ":^")):
+        axs[0].plot(values, pick(name, "holdup_kg"), style, label=LABELS[name])
+        axs[1].plot(values, pick(name, "mean_residence_time_min"), style, label=LABELS[name])
+    for col, style in (("t10_min", "-v"), ("t50_min", "-o"), ("t90_min", "-^")):
+        axs[2].plot(values, pick("table", col), style, label="CFD table, " + col.split("_")[0])
+    for ax, ylabel in zip(axs, ("holdup [kg]", "mean residence time [min]", "RTD quantiles [min]")):
+        ax.set_xlabel(entry)
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Operating curve: %s" % entry)
+    fig.tight_layout()
+    files.save_figure(fig, out, 100)
+
+
+def write(desc, study_dir, rows, error, error_source, plan, curtain_note, curve=None):
     """report.html (and rtdRoutes.png, profile.png beside it), written whole."""
     import jinja2
     work = os.path.join(study_dir, "routes")
@@ -103,7 +129,8 @@ def write(desc, study_dir, rows, error, error_source, plan, curtain_note):
         name=os.path.splitext(os.path.basename(desc.path))[0], description=desc.path,
         written=datetime.date.today().isoformat(), routes=rows, labels=LABELS, table=by["table"],
         low=by["tableLow"], high=by["tableHigh"], band_lo=min(band), band_hi=max(band), tracer=tracer,
-        error=error, error_source=error_source, plan=plan, curtain=curtain_note, defaults=desc.defaults)
+        error=error, error_source=error_source, plan=plan, curtain=curtain_note, defaults=desc.defaults,
+        curve=curve)
     for r in rows:
         for k, v in r.items():
             if isinstance(v, float) and not math.isfinite(v):

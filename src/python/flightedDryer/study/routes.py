@@ -69,14 +69,15 @@ def quantiles(results):
     return out
 
 
-def run_routes(desc, table, work, say):
-    """Every route's drumSolver run in work/<route>; returns the rows of routes.csv."""
+def run_routes(desc, table, work, say, override=None):
+    """Every route's drumSolver run in work/<route> (on an operating curve, with
+    override = (SECTION.KEY, value)); returns the rows of routes.csv and e."""
     e, _ = error_band()
     rows = []
     for name, drift, section in route_settings(table, e):
         case = os.path.join(work, name)
         os.makedirs(case, exist_ok=True)
-        atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, section))
+        atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, section, override))
         with open(os.path.join(case, "log.drumSolver"), "w") as log:
             rc = subprocess.run(["drumSolver", "-case", case], stdout=log, stderr=subprocess.STDOUT).returncode
         if rc != 0:
@@ -88,13 +89,16 @@ def run_routes(desc, table, work, say):
                "mean_residence_time_min": float(s["exact_mean_s"]) / 60.0,
                "rtd_std_min": float(s["exact_std_s"]) / 60.0, "t10_min": q[0], "t50_min": q[1], "t90_min": q[2]}
         rows.append(row)
-        say("route %-9s holdup %.0f kg, mean residence time %.2f min, SD %.2f min"
-            % (name, row["holdup_kg"], row["mean_residence_time_min"], row["rtd_std_min"]))
+        say("%sroute %-9s holdup %.0f kg, mean residence time %.2f min, SD %.2f min"
+            % ("%s %g: " % override if override else "", name, row["holdup_kg"], row["mean_residence_time_min"],
+               row["rtd_std_min"]))
     return rows, e
 
 
-def write_routes(rows, path):
-    lines = [",".join(COLUMNS)]
+def write_routes(rows, path, first=()):
+    """routes.csv (or curve.csv: the curve's value first), written whole."""
+    cols = list(first) + COLUMNS
+    lines = [",".join(cols)]
     for r in rows:
-        lines.append(",".join(r[c] if isinstance(r[c], str) else "%.6g" % r[c] for c in COLUMNS))
+        lines.append(",".join(r[c] if isinstance(r[c], str) else "%.6g" % r[c] for c in cols))
     atomic_write(path, "\n".join(lines) + "\n")

@@ -38,10 +38,19 @@ def test_defaults_are_named(tmp_path):
     ("study: {scene: drumSegment}\n", r"entry 'study.scene' = 'drumSegment' is not one of box"),
     ("study: {table: nothere.csv}\n", r"entry 'study.table': no such table"),
     ("model: {type: compartment, drift: table}\n", r"entry 'model.drift': the study sets the drift per route"),
+    ("study: {curve: {entry: gas.massRate, values: [10]}}\n", r"entry 'study.curve.values' must be a list of 2"),
+    ("study: {curve: {entry: drum.length, values: [10, 12]}}\n", r"entry 'study.curve.entry' = 'drum.length' is not"),
+    ("study: {curve: {entry: gas.massRate}}\n", r"entry 'study.curve' must be \{entry"),
 ])
 def test_bad_descriptions_are_refused_naming_the_entry(tmp_path, extra, match):
     with pytest.raises(InputError, match=match):
         Description(write(tmp_path, GOOD + extra))
+
+
+def test_a_curve_point_overrides_its_entry(tmp_path):
+    d = Description(write(tmp_path, GOOD + "study: {curve: {entry: flights.count, values: [20, 28]}}\n"))
+    assert d.study["curve"] == {"entry": "flights.count", "values": [20.0, 28.0]}
+    assert "count: 20," in d.drum_dict("sherritt", {}, ("flights.count", 20.0))
 
 
 def test_a_missing_section_or_bad_yaml_is_refused(tmp_path):
