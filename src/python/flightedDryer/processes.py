@@ -76,6 +76,14 @@ class Children:
             self._running.append(p)
         return p
 
+    def call(self, cmd, out=None, cwd=None):
+        """spawn() and wait; the exit status. Interrupted while waiting, the child
+        stays registered for stop_all()."""
+        p = self.spawn(cmd, out, cwd=cwd)
+        rc = p.wait()
+        self.done(p)
+        return rc
+
     def done(self, p):
         with self._lock:
             if p in self._running:
@@ -109,6 +117,12 @@ class Children:
                     os.killpg(p.pid, signal.SIGKILL)
                 except ProcessLookupError:
                     pass
+
+
+def run_tied(cmd, **kwargs):
+    """subprocess.run of cmd, the child sent SIGTERM should this tool die (even by
+    SIGKILL): a short child left behind cannot outlive its caller."""
+    return subprocess.run(["setpriv", "--pdeathsig", "TERM", "--"] + list(cmd), **kwargs)
 
 
 def interrupts_raise():

@@ -15,6 +15,7 @@ from .. import PROJECT, options
 from ..errors import InputError, RunError, SchedulerError
 from ..files import WriteError, atomic_write
 from ..messages import sayer
+from ..processes import Children, interrupts_raise, run_tied
 from . import plan, report, routes
 from .description import Description
 
@@ -24,7 +25,7 @@ VALUED = {"-dict", "-out", "-jobs"}
 DONE = "study.json"
 
 
-def _sweep(desc, study, g, out, jobs):
+def _sweep(desc, study, g, out, jobs, children):
     """The table of grid g in out/table: reused when the sweep dictionary is the
     same as the finished one there, else swept (buildDriftTable resumes finished runs)."""
     tdir = os.path.join(out, "table")
@@ -40,7 +41,8 @@ def _sweep(desc, study, g, out, jobs):
         os.remove(sig_file)
     atomic_write(os.path.join(tdir, "sweepDict"), text)
     t0 = time.time()
-    rc = subprocess.run(["buildDriftTable", "-dict", os.path.join(tdir, "sweepDict"), "-jobs", str(jobs)]).returncode
+    # in a process group of its own, tied to this tool: stopped with it (it stops its runs)
+    rc = children.call(["buildDriftTable", "-dict", os.path.join(tdir, "sweepDict"), "-jobs", str(jobs)])
     if rc == 2:
         raise RunError("buildDriftTable refused the planned sweep (%s): see its message above"
                        % os.path.join(tdir, "sweepDict"))
@@ -65,15 +67,15 @@ def _curtain(g, desc, study, out):
             "-boxWidth", "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0), "-keep",
             "-template", os.path.join(PROJECT, g["template"])]
     with open(os.path.join(out, "log.curtain"), "w") as log:
-        if subprocess.run(args, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+        if run_tied(args, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
             return None
-        if subprocess.run(["plotCurtain", "-case", os.path.join(cdir, "case"), "-out", os.path.join(out, "curtain.png"),
+        if run_tied(["plotCurtain", "-case", os.path.join(cdir, "case"), "-out", os.path.join(out, "curtain.png"),
                            "-noVTK"], stdout=log, stderr=subprocess.STDOUT).returncode != 0:
             return None
     return "One curtain of the table: V_g %g m/s, spill %g kg/(m s), fall %g m (curtain/, plotCurtain)." % (V, S, Y)
 
 
-def run(opts):
+def run(opts, children):
     desc = Description(opts["-dict"])
     study = desc.study
     out = os.path.abspath(opts["-out"])
@@ -121,7 +123,7 @@ def run(opts):
         e, _ = routes.error_band()
         wall = 0.0
         for attempt in range(4):
-            table, took = _sweep(desc, study, g, out, int(jobs))
+            table, took = _sweep(desc, study, g, out, int(jobs), children)
             wall += took or 0.0
             asked = q
             for k, pt in enumerate(points):
@@ -153,7 +155,7 @@ def run(opts):
     if curve_rows:
         routes.write_routes(curve_rows, os.path.join(out, "curve.csv"), ["value"])
         report.curve_figure(curve_rows, curve["entry"], os.path.join(out, "curve.png"))
-    subprocess.run(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
+    run_tied(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
     curtain = _curtain(g, desc, study, out) if g else None
     gas = desc.sections["gas"]
     planned = {"runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
@@ -173,9 +175,11 @@ def run(opts):
 
 
 def main(argv, usage):
+    interrupts_raise()
+    children = Children()
     try:
         opts = options.parse(argv, FLAGS, VALUED, ("-dict", "-out"), "dryerStudy", usage)
-        return run(opts)
+        return run(opts, children)
     except InputError as e:
         print("dryerStudy: bad input: %s" % e, file=sys.stderr)
         return 2
@@ -183,6 +187,9 @@ def main(argv, usage):
         print("dryerStudy: FAILED: %s" % e, file=sys.stderr)
         return 1
     except KeyboardInterrupt:
+        children.stop_all()
         print("dryerStudy: interrupted; rerun the same command to go on (finished curtain runs are kept)",
               file=sys.stderr)
         return 130
+    finally:
+        children.stop_all()

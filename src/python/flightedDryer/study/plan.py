@@ -8,11 +8,11 @@ run's cells from the template's mesh level."""
 import csv
 import math
 import os
-import subprocess
 
 from .. import PROJECT, facts, foamDictionary
 from ..errors import InputError
 from ..files import atomic_write
+from ..processes import run_tied
 
 TEMPLATES = os.path.join(PROJECT, "etc", "templates", "curtain")
 # drums up to this diameter are laboratory or pilot scale: their falls are below
@@ -33,7 +33,7 @@ def queries(desc, case, say, drift="sherritt", section=None, what="Eq 142 pass",
     os.makedirs(case, exist_ok=True)
     atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, dict(section or {}, recordQueries=True),
                                                                 override))
-    r = subprocess.run(["drumSolver", "-case", case], capture_output=True, text=True)
+    r = run_tied(["drumSolver", "-case", case], capture_output=True, text=True)
     if r.returncode != 0:
         msg = (r.stderr or r.stdout).strip().replace(os.path.join(case, "drumDict"), desc.path)
         raise InputError(msg.replace("drumSolver: input error: ", ""))

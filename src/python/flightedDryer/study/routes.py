@@ -12,6 +12,7 @@ import subprocess
 from .. import PROJECT
 from ..errors import RunError
 from ..files import atomic_write
+from ..processes import run_tied
 
 SCORES = os.path.join(PROJECT, "validation", "windTunnelDrift", "results", "scoresBreakdown.csv")
 ROUTE_NAMES = ("table", "sherritt", "isolated", "tableLow", "tableHigh")
@@ -79,7 +80,7 @@ def run_routes(desc, table, work, say, override=None):
         os.makedirs(case, exist_ok=True)
         atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, section, override))
         with open(os.path.join(case, "log.drumSolver"), "w") as log:
-            rc = subprocess.run(["drumSolver", "-case", case], stdout=log, stderr=subprocess.STDOUT).returncode
+            rc = run_tied(["drumSolver", "-case", case], stdout=log, stderr=subprocess.STDOUT).returncode
         if rc != 0:
             raise RunError("drumSolver on route %s failed (log: %s)" % (name, os.path.join(case, "log.drumSolver")))
         s = _row(os.path.join(case, "results", "summary.csv"))
