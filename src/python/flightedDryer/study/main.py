@@ -11,11 +11,13 @@ import subprocess
 import sys
 import time
 
-from .. import PROJECT, options
+from .. import options
 from ..errors import InputError, RunError, SchedulerError
 from ..files import WriteError, atomic_write
 from ..messages import sayer
 from ..processes import Children, interrupts_raise, run_tied
+from ..sweep.dictionary import read_sweep
+from ..sweep.plan import box_case
 from . import plan, report, routes
 from .description import Description
 
@@ -52,27 +54,30 @@ def _sweep(desc, study, g, out, jobs, children):
     return table, time.time() - t0
 
 
-def _curtain(g, desc, study, out):
-    """One curtain of the table kept and pictured (the middle grid point, the highest floor)."""
+def _curtain(g, out):
+    """One curtain of the table kept and pictured: the sweep's own run of the middle
+    grid point at the highest floor (sweep.plan.box_case), with -keep."""
     cdir = os.path.join(out, "curtain")
     V = g["gasVelocity"][len(g["gasVelocity"]) // 2]
     S = g["spillRate"][len(g["spillRate"]) // 2]
     Y = g["floors"][-1]
-    gas = desc.sections["gas"]
-    args = ["curtainCase", "-dir", cdir, "-gasVelocity", "%g" % V, "-spillRate", "%g" % S, "-fallHeight", "%g" % Y,
-            "-flightLength", "%g" % g["flightLength"][0], "-density", "%g" % g["particleDensity"][0],
-            "-diameters", ",".join("%g" % d for d in g["diameter"]),
-            "-fractions", ",".join("%.8g" % w for w in g["massFractions"]), "-level", study["level"],
-            "-gasTemperature", "%g" % float(gas.get("temperature_C", 20.0)),
-            "-boxWidth", "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0), "-keep",
-            "-template", os.path.join(PROJECT, g["template"])]
+    s = read_sweep(os.path.join(out, "table", "sweepDict"))
+    c = box_case(s, V, S, g["flightLength"][0], g["particleDensity"][0], Y)
     with open(os.path.join(out, "log.curtain"), "w") as log:
-        if run_tied(args, stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+        if run_tied(["curtainCase", "-dir", cdir] + c["args"] + ["-keep"], stdout=log,
+                    stderr=subprocess.STDOUT).returncode != 0:
             return None
         if run_tied(["plotCurtain", "-case", os.path.join(cdir, "case"), "-out", os.path.join(out, "curtain.png"),
-                           "-noVTK"], stdout=log, stderr=subprocess.STDOUT).returncode != 0:
+                     "-noVTK"], stdout=log, stderr=subprocess.STDOUT).returncode != 0:
             return None
     return "One curtain of the table: V_g %g m/s, spill %g kg/(m s), fall %g m (curtain/, plotCurtain)." % (V, S, Y)
+
+
+def _record_plan(info, g, study, out):
+    """The plan's runs, CPU estimate and grid into info, and plan.json."""
+    info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
+                grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
+    atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
 
 
 def run(opts, children):
@@ -96,6 +101,7 @@ def run(opts, children):
         q = plan.union(q, plan.queries(desc, os.path.join(out, "plan", "curve%d" % k), say,
                                        what="Eq 142 pass, %s %g" % pt, override=pt))
     info = {"queries": q, "estimate_s": 0.0, "runs": 0}
+    e, e_source = routes.error_band()
     if study["table"]:
         table, wall = study["table"], None
         say("the drift table is the description's: %s (no sweep)" % table)
@@ -105,11 +111,9 @@ def run(opts, children):
         miss = plan.covers(g, q)
         if miss:
             raise RunError("the planned grid misses the queries on %s" % ", ".join(miss))
-        info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
-                    grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
+        _record_plan(info, g, study, out)
         say("plan: %d curtain runs (V_g %s m/s x spill %s kg/(m s) x floors %s m), about %.0f s of CPU"
             % (info["runs"], g["gasVelocity"], g["spillRate"], g["floors"], info["estimate_s"]))
-        atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
         if opts.get("-plan"):
             say("-plan: nothing swept; the plan is in %s" % os.path.join(out, "plan.json"))
             return 0
@@ -120,7 +124,6 @@ def run(opts, children):
         # the table's own routes may ask beyond what the Eq 142 pass asked (the drum
         # model's state follows its drift): each is run on the table (clamped,
         # recorded), and the grid widened and swept again until it covers them
-        e, _ = routes.error_band()
         wall = 0.0
         for attempt in range(4):
             table, took = _sweep(desc, study, g, out, int(jobs), children)
@@ -142,32 +145,29 @@ def run(opts, children):
             say("the routes ask beyond the grid on %s: widening it" % ", ".join(miss))
             q = asked
             g = plan.grid(q, desc, study)
-            info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
-                        grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
-            atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+            _record_plan(info, g, study, out)
         wall = wall or None
-    rows, e = routes.run_routes(desc, table, os.path.join(out, "routes"), say)
+    rows = routes.run_routes(desc, table, e, os.path.join(out, "routes"), say)
     routes.write_routes(rows, os.path.join(out, "routes.csv"))
     curve_rows = []
     for k, pt in enumerate(points[1:]):
-        r, _ = routes.run_routes(desc, table, os.path.join(out, "curve", "%d" % k), say, override=pt)
+        r = routes.run_routes(desc, table, e, os.path.join(out, "curve", "%d" % k), say, override=pt)
         curve_rows += [dict(row, value=pt[1]) for row in r]
     if curve_rows:
         routes.write_routes(curve_rows, os.path.join(out, "curve.csv"), ["value"])
         report.curve_figure(curve_rows, curve["entry"], os.path.join(out, "curve.png"))
     run_tied(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
-    curtain = _curtain(g, desc, study, out) if g else None
-    gas = desc.sections["gas"]
+    curtain = _curtain(g, out) if g else None
     planned = {"runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
                "wall_s": wall or 0.0, "source": table,
-               "level": study["level"], "box": "%g" % min(float(desc.sections["drum"]["diameter"]), 20.0),
-               "gas_t": "%g" % float(gas.get("temperature_C", 20.0)),
+               "level": study["level"], "box": "%g" % plan.box_width(desc),
+               "gas_t": "%g" % plan.gas_temperature(desc),
                "gas": g and " ".join("%g" % v for v in g["gasVelocity"]),
                "spill": g and " ".join("%g" % v for v in g["spillRate"]),
                "falls": g and " ".join("%g" % v for v in g["floors"]),
                "classes": len(desc.sections["material"]["sizes_um"]),
                "queries": "; ".join("%s %.4g-%.4g" % (k, v[0], v[1]) for k, v in q.items())}
-    report.write(desc, out, rows, e, routes.error_band()[1], planned, curtain, curve and curve["entry"])
+    report.write(desc, out, rows, e, e_source, planned, curtain, curve and curve["entry"])
     atomic_write(os.path.join(out, DONE), json.dumps({"description": desc.path, "table": table,
                                                       "routes": rows, "plan": info}, indent=1) + "\n")
     say("report: %s" % os.path.join(out, "report.html"))

@@ -155,6 +155,17 @@ def _list(values, form="%.6g"):
     return "(" + " ".join(form % v for v in values) + ")"
 
 
+def box_width(desc):
+    """The box's full width: the drum's diameter (a sheet in the drum has no more
+    room to go round), at most curtainCase's 20 m."""
+    return min(float(desc.sections["drum"]["diameter"]), 20.0)
+
+
+def gas_temperature(desc):
+    """The dryer's gas temperature, degC (the drum model's default 20 when not given)."""
+    return float(desc.sections["gas"].get("temperature_C", 20.0))
+
+
 def sweep_dict(g, desc, study, output):
     """The buildDriftTable dictionary of the grid."""
     gas = desc.sections["gas"]
@@ -162,10 +173,10 @@ def sweep_dict(g, desc, study, output):
              "// written by dryerStudy from %s" % desc.path,
              'template "%s";' % g["template"], "level %s;" % study["level"],
              "iterations %d;" % study["iterations"],
-             "gasTemperature %.6g;" % float(gas.get("temperature_C", 20.0))]
+             "gasTemperature %.6g;" % gas_temperature(desc)]
     if "pressure_kPa" in gas:
         lines.append("gasPressure %.6g;" % float(gas["pressure_kPa"]))
-    lines += ["boxWidth %.6g;" % min(float(desc.sections["drum"]["diameter"]), 20.0),
+    lines += ["boxWidth %.6g;" % box_width(desc),
               "grid", "{",
               "    gasVelocity %s;" % _list(g["gasVelocity"]), "    spillRate %s;" % _list(g["spillRate"]),
               "    flightLength %s;" % _list(g["flightLength"]),

@@ -70,10 +70,10 @@ def quantiles(results):
     return out
 
 
-def run_routes(desc, table, work, say, override=None):
-    """Every route's drumSolver run in work/<route> (on an operating curve, with
-    override = (SECTION.KEY, value)); returns the rows of routes.csv and e."""
-    e, _ = error_band()
+def run_routes(desc, table, e, work, say, override=None):
+    """Every route's drumSolver run in work/<route>, the band's routes at exp(+-e)
+    (on an operating curve, with override = (SECTION.KEY, value)); the rows of
+    routes.csv."""
     rows = []
     for name, drift, section in route_settings(table, e):
         case = os.path.join(work, name)
@@ -93,7 +93,7 @@ def run_routes(desc, table, work, say, override=None):
         say("%sroute %-9s holdup %.0f kg, mean residence time %.2f min, SD %.2f min"
             % ("%s %g: " % override if override else "", name, row["holdup_kg"], row["mean_residence_time_min"],
                row["rtd_std_min"]))
-    return rows, e
+    return rows
 
 
 def write_routes(rows, path, first=()):
