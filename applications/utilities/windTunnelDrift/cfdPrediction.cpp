@@ -170,6 +170,7 @@ std::map<int, CfdRow> cfdPredictions
             << " -diameters " << join(r.d) << " -fractions " << join(r.w) << " -heights " << t.fallHeight
             << " -level " << o.level << " -np " << o.np;
         if (!o.drag.empty()) cmd << " -drag " << o.drag;
+        if (!o.sphericity.empty()) cmd << " -sphericity " << quote(o.sphericity);
         if (!o.particleTurbulence.empty()) cmd << " -particleTurbulence " << o.particleTurbulence;
         if (!o.turbulentDispersion.empty()) cmd << " -turbulentDispersion " << o.turbulentDispersion;
         if (!o.particleParticleDrag.empty()) cmd << " -particleParticleDrag " << o.particleParticleDrag;

@@ -31,6 +31,9 @@ struct CfdOptions
     std::string turbulence;          //!< curtainCase -turbulence (empty: the template's gas model)
     std::string wakeShare;           //!< curtainCase -wakeShare (empty: its default; checked there)
     std::string releaseVelocity;     //!< curtainCase -releaseVelocity (empty: the template's)
+    //! curtainCase -sphericity, with -drag HaiderLevenspiel only (empty: spheres); the
+    //! classes keep the materials file's diameters
+    std::string sphericity;
     //! curtainCase -layerThickness: empty (the template's 0.05 m), a value in m, or "packed":
     //! per row the layer that carries the spill at the bulk density and the release velocity,
     //! b = S/(rho_b v), thickened where that would exceed a solids fraction of 0.5 at the slot

@@ -71,7 +71,7 @@ const char* usage =
     "usage:\n"
     "  windTunnelDrift -tests FILE.csv -out PRED.csv -model NAME [-materials FILE] [-table FILE[,FILE...]]\n"
     "               [-outside refuse|clamp] [-constants FILE] [-level coarse|medium|fine] [-np N]\n"
-    "               [-drag NAME] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
+    "               [-drag NAME [-sphericity PSI]] [-turbulence kEpsilon|realizableKE|kOmegaSST]\n"
     "               [-particleTurbulence none|Simonin|SimoninCrowe] [-wakeShare CP]\n"
     "               [-turbulentDispersion none|gradientDiffusion] [-particleParticleDrag none|Syamlal]\n"
     "               [-releaseVelocity V] [-sieveBottom UM]\n"
@@ -147,7 +147,7 @@ Args parse(int argc, char** argv)
     static const std::set<std::string> flags{"keep", "score", "help", "skipFailed", "allowMissing"};
     static const std::set<std::string> options{"tests", "out", "model", "materials", "table", "outside",
         "constants", "level", "np", "drag", "work", "fit", "predictions", "png", "pngModels", "particleTurbulence", "byMaterial", "turbulentDispersion", "particleParticleDrag", "collection", "jobs",
-        "turbulence", "wakeShare", "releaseVelocity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
+        "turbulence", "wakeShare", "releaseVelocity", "sphericity", "layerThickness", "sieveBottom", "sheetConstants", "sizeClasses",
         "gasPressure", "tunnelReading", "quantity"};
     Args a;
     for (int i = 1; i < argc; ++i)
@@ -512,6 +512,16 @@ int predict(const Args& a)
         if (!o.releaseVelocity.empty() && !numberText(o.releaseVelocity))
         {
             throw drum::InputError("", "-releaseVelocity", "'" + o.releaseVelocity + "' is not a number (m/s)");
+        }
+        o.sphericity = a.get("sphericity");
+        if (!o.sphericity.empty() && o.drag != "HaiderLevenspiel")
+        {
+            throw drum::InputError("", "-sphericity", "an entry of -drag HaiderLevenspiel only");
+        }
+        if (!o.sphericity.empty() && !numberText(o.sphericity))
+        {
+            throw drum::InputError("", "-sphericity", "'" + o.sphericity + "' is not a number "
+                "(curtainCase checks its range)");
         }
         if (!o.wakeShare.empty() && o.particleTurbulence != "SimoninCrowe")
         {

@@ -16,6 +16,7 @@ Modules:
   options        command-line options checked against their ranges
   gas            the curtain's air, from the C++ air model
   facts          the facts the C++ side owns (drag laws, Eq 142, table axes)
+  densityRule    a particle density from the bulk density where the printed one is impossible
   curtain        one curtain case: inputs, set-up, the run, its results, folders
   sweep          a drift-table sweep: dictionary, plan, local pool, Slurm, table
   docFigures     the figures of the README and docs/, written from results
