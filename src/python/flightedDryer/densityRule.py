@@ -84,8 +84,8 @@ def particle_density(particle, bulk, data=None):
     """(central, low, high, applied) particle density in kg/m3 of a material printed with
     `particle` and `bulk`: the printed value three times when the pair is possible
     (applied False), else bulk over the mean, largest and smallest reference packing."""
-    if not (particle > 0 and bulk > 0):
-        raise InputError("particle density %r and bulk density %r must be positive numbers" % (particle, bulk))
+    if not (0 < particle < 1e5 and 0 < bulk < 1e5):
+        raise InputError("particle density %r and bulk density %r must be numbers in (0, 1e5) kg/m3" % (particle, bulk))
     if bulk / particle <= RANDOM_CLOSE_PACKING:
         return particle, particle, particle, False
     ref = sorted(reference_packings(data).values())

@@ -87,14 +87,9 @@ def run_main(argv, usage):
     if os.path.isdir(s["output"]):
         raise InputError("-out %s is a folder, not a file" % s["output"])
     jobs, np_ = int(opts["-jobs"]), int(opts["-np"])
-    if s["scene"] == "drumSegment":
-        for k in ("-allowIncomplete", "-slurm"):
-            if opts.get(k):
-                raise InputError("%s is not available for scene drumSegment (a segment table is written "
-                                "whole, from this machine's runs)" % k)
-        if opts["-scheduler"] != "local":
-            raise InputError("-scheduler %s is not available for scene drumSegment (local only)"
-                            % opts["-scheduler"])
+    if s["scene"] == "drumSegment" and opts.get("-allowIncomplete"):
+        raise InputError("-allowIncomplete is not available for scene drumSegment (a segment table "
+                         "is written whole)")
     cases = cases_of(s)
     if opts.get("-status"):
         n = print_status(s, cases)

@@ -14,7 +14,7 @@ from ..errors import SchedulerError
 from ..files import atomic_write
 from .localPool import curtain_reason, log_lines
 from .plan import case_args, finished
-from .settings import SLURM_POLL, say
+from .settings import ARGS, RESULT, SLURM_POLL, say
 
 
 def slurm_dir(s):
@@ -48,10 +48,9 @@ line=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {lst})
 [ -n "$line" ] || {{ echo "no case for task $SLURM_ARRAY_TASK_ID in {lst}" >&2; exit 1; }}
 # a case finished with these inputs (curtainCase -check's signature) is not recomputed
 dir=$(echo "$line" | awk '{{for (i = 1; i < NF; i++) if ($i == "-dir") print $(i+1)}}')
-if [ -f "$dir/curtainResult.csv" ] && [ -f "$dir/curtainCase.args.json" ]; then
+if [ -f "$dir/{result}" ] && [ -f "$dir/{record}" ]; then
     want=$(eval "$line -check" 2>/dev/null | awk '/^inputs /{{print $2}}')
-    have=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1])).get("inputs", ""))' \
-           "$dir/curtainCase.args.json" 2>/dev/null)
+    have=$({read_record})
     if [ -n "$want" ] && [ "$want" = "$have" ]; then echo "already done: $dir"; exit 0; fi
 fi
 eval "$line"; rc=$?
@@ -59,7 +58,7 @@ eval "$line"; rc=$?
 if [ $rc -eq 1 ]; then echo "retrying once"; eval "$line"; rc=$?; fi
 exit $rc
 """.format(script=script, collect=os.path.join(d, "collect.sh"), array=array,
-           np=np_, d=d, project=PROJECT, lst=lst, opts=opts)
+           np=np_, d=d, project=PROJECT, lst=lst, opts=opts, **finished_record(s))
     atomic_write(script, text)
     collect = os.path.join(d, "collect.sh")
     ctext = """#!/bin/bash
@@ -72,6 +71,18 @@ buildDriftTable -dict {dict} -work {work} -out {out} -collect "$@"
     os.chmod(collect, 0o755)
     os.chmod(script, 0o755)
     return script, collect, lst
+
+
+def finished_record(s):
+    """What a task reads to tell a finished case (plan.finished's rule, in the task's shell):
+    its result file, the file recording its inputs' signature and the command that prints it."""
+    if s["scene"] == "drumSegment":
+        # drumSegmentCase writes `inputs SIGNATURE` to .drumSegmentCase of a finished run
+        return {"result": "curtains.csv", "record": ".drumSegmentCase",
+                "read_record": "awk '/^inputs /{print $2}' \"$dir/.drumSegmentCase\" 2>/dev/null"}
+    return {"result": RESULT, "record": ARGS,
+            "read_record": "python3 -c 'import json, sys; print(json.load(open(sys.argv[1])).get(\"inputs\", \"\"))' "
+                           "\"$dir/%s\" 2>/dev/null" % ARGS}
 
 
 def array_spec(indices):
