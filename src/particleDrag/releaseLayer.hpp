@@ -12,6 +12,12 @@ namespace particleDrag
 //  curtainCase, buildDriftTable, the segment table)
 constexpr double maxSpillRate = 1000.0;
 
+//- The solids fraction at the curtain's edge (Lee 2008's 5.6e-4): the gas inside
+//  the curtain is read where the solids fraction reaches it (curtainSolids,
+//  curtainGasVelocity, curtainEdges), and a curtain that never reaches it does not
+//  shield the gas (the drift table's V_c/V_g 1; dryerStudy's lone-particle scene)
+constexpr double curtainEdgeSolidsFraction = 5.6e-4;
+
 //- Solids fraction at the slot, alpha = S/(rho_p b v)
 inline double slotSolidsFraction(double spill, double rhoP, double thickness, double velocity)
 {

@@ -82,7 +82,8 @@ int main(int argc, char* argv[])
                 eq142.k, eq142.a, eq142.b, eq142.c);
     std::printf("  \"driftTableColumns\": %s,\n", list(drum::driftTableColumns()).c_str());
     std::printf("  \"tunnelDriftColumn\": %s,\n", quoted(drum::tunnelDriftColumn()).c_str());
-    std::printf("  \"maxSpillRate\": %.17g\n", particleDrag::maxSpillRate);
+    std::printf("  \"maxSpillRate\": %.17g,\n", particleDrag::maxSpillRate);
+    std::printf("  \"curtainEdgeSolidsFraction\": %.17g\n", particleDrag::curtainEdgeSolidsFraction);
     std::printf("}\n");
     return 0;
 }

@@ -52,6 +52,11 @@ def max_spill_rate():
     return float(_facts()["maxSpillRate"])
 
 
+def curtain_edge_solids_fraction():
+    """The solids fraction at a curtain's edge (particleDrag::curtainEdgeSolidsFraction)."""
+    return float(_facts()["curtainEdgeSolidsFraction"])
+
+
 def slot_solids_fraction(spill, rho_p, thickness, velocity):
     """Solids fraction at the slot, S/(rho_p b v) (particleDrag::slotSolidsFraction,
     Lee 2008 Eq 5.4): spill kg/(m s), rho_p kg/m3, thickness m, velocity m/s."""

@@ -100,12 +100,23 @@ def run(opts, children):
         # one table serves the whole curve: the grid covers every point's queries
         q = plan.union(q, plan.queries(desc, os.path.join(out, "plan", "curve%d" % k), say,
                                        what="Eq 142 pass, %s %g" % pt, override=pt))
-    info = {"queries": q, "estimate_s": 0.0, "runs": 0}
+    sc = ({"scene": "table", "route": "table", "why": "the description gives its drift table (study.table)"}
+          if study["table"] else plan.scene(q, desc))
+    say("scene %s: %s" % (sc["scene"], sc["why"]))
+    info = {"queries": q, "estimate_s": 0.0, "runs": 0, "scene": sc["scene"], "why": sc["why"]}
     e, e_source = routes.error_band()
+    g = None
     if study["table"]:
         table, wall = study["table"], None
         say("the drift table is the description's: %s (no sweep)" % table)
-        g = None
+    elif sc["route"] != "table":
+        # the scene needs no curtain run: the study's own route is the lone particles'
+        table, wall = None, None
+        atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+        say("plan: no curtain runs (scene %s); the drift is the lone particles'" % sc["scene"])
+        if opts.get("-plan"):
+            say("-plan: nothing to sweep; the plan is in %s" % os.path.join(out, "plan.json"))
+            return 0
     else:
         g = plan.grid(q, desc, study)
         miss = plan.covers(g, q)
@@ -156,9 +167,10 @@ def run(opts, children):
     if curve_rows:
         routes.write_routes(curve_rows, os.path.join(out, "curve.csv"), ["value"])
         report.curve_figure(curve_rows, curve["entry"], os.path.join(out, "curve.png"))
-    run_tied(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
+    if table:
+        run_tied(["plotDriftTable", table, os.path.join(out, "driftTable.png")], capture_output=True)
     curtain = _curtain(g, out) if g else None
-    planned = {"runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
+    planned = {"scene": sc["scene"], "why": sc["why"], "runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
                "wall_s": wall or 0.0, "source": table,
                "level": study["level"], "box": "%g" % plan.box_width(desc),
                "gas_t": "%g" % plan.gas_temperature(desc),

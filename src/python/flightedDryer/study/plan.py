@@ -60,6 +60,39 @@ def template(desc):
     return os.path.join("etc", "templates", "curtain", name)
 
 
+def scene(q, desc):
+    """What the drift needs, from the drum model's queries: {scene, route, why}.
+    - none: no gas flows (every query at V_g 0): the gas drifts nothing, the drift
+      along the drum is the incline's alone and no curtain run can change it;
+    - lone: the densest release (the largest spill asked) leaves the flight below the
+      solids fraction of a curtain's edge (particleDrag::curtainEdgeSolidsFraction):
+      no part of any curtain shields the gas (a table would hold V_c/V_g 1 throughout),
+      so lone particles are the curtain's answer;
+    - box: the curtain shields the gas: a drift table of box curtains as wide as the drum."""
+    vmax = q["gas_velocity_m_s"][1]
+    if not vmax > 0:
+        return {"scene": "none", "route": "isolated",
+                "why": "no gas flows (the drum model asks V_g %g m/s at most): the gas drifts nothing, so no "
+                       "curtain run is needed; every drift route gives the incline's drift alone" % vmax}
+    tpl = template(desc)
+    cp = os.path.join(PROJECT, tpl, "system", "caseParameters")
+    b, v = foamDictionary.scalar(cp, "thickness"), foamDictionary.scalar(cp, "releaseVelocity")
+    smax, rho = q["spill_rate_kg_m_s"][1], q["particle_density_kg_m3"][1]
+    alpha = facts.slot_solids_fraction(smax, rho, b, v)
+    edge = facts.curtain_edge_solids_fraction()
+    if alpha < edge:
+        return {"scene": "lone", "route": "isolated",
+                "why": "the densest release (spill %.4g kg/(m s) through the %g m layer at %g m/s) leaves the "
+                       "flight at solids fraction %.3g, below a curtain's edge (%.3g): no curtain shields the gas, "
+                       "so lone particles are the curtain's answer and no curtain run is needed"
+                       % (smax, b, v, alpha, edge)}
+    return {"scene": "box", "route": "table",
+            "why": "the densest release (spill %.4g kg/(m s) through the %g m layer at %g m/s) leaves the flight at "
+                   "solids fraction %.3g, above a curtain's edge (%.3g): the curtain shields the gas, so the drift "
+                   "comes from a table of box curtains (template %s) as wide as the drum"
+                   % (smax, b, v, alpha, edge, os.path.basename(tpl))}
+
+
 def _level(tpl, level):
     """The template's mesh entries of a level (nx, nz counts, ny and the height H)."""
     ml = os.path.join(PROJECT, tpl, "system", "meshLevels")

@@ -13,7 +13,14 @@ from .. import PROJECT, files
 
 TEMPLATE = os.path.join(PROJECT, "etc", "templates", "study")
 LABELS = {"table": "CFD drift table", "sherritt": "Eq 142 (Sherritt)", "isolated": "lone particles",
-          "tableLow": "CFD table, low end of the band", "tableHigh": "CFD table, high end of the band"}
+          "tableLow": "CFD table, low end of the band", "tableHigh": "CFD table, high end of the band",
+          "isolatedLow": "lone particles, low end of the band",
+          "isolatedHigh": "lone particles, high end of the band"}
+
+
+def _primary(names):
+    """The study's own route (the first) and its band's routes."""
+    return names[0], names[0] + "Low", names[0] + "High"
 
 
 def _rtd(results):
@@ -41,14 +48,15 @@ def _tracer(desc):
     return t, E
 
 
-def rtd_figure(work, desc, out):
-    """rtdRoutes.png: E(t) of every route, linear and log, the band shaded."""
+def rtd_figure(work, desc, out, names):
+    """rtdRoutes.png: E(t) of every route (names, the study's own first), linear and
+    log, the band shaded."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axs = plt.subplots(1, 2, figsize=(13, 4.8))
-    curves = {r: _rtd(os.path.join(work, r, "results")) for r in ("table", "sherritt", "isolated", "tableLow",
-                                                                   "tableHigh")}
+    own, low, high = _primary(names)
+    curves = {r: _rtd(os.path.join(work, r, "results")) for r in names}
     tracer = _tracer(desc)
     if tracer:   # samples before the pulse (background) are not drawn
         tracer = ([t for t in tracer[0] if t >= 0], [e for t, e in zip(*tracer) if t >= 0])
@@ -56,13 +64,14 @@ def rtd_figure(work, desc, out):
     ends = [max(t for t, e in zip(*c) if e >= 1e-4 * max(c[1])) for c in curves.values()]
     right = 1.05 * max(ends + ([max(tracer[0])] if tracer else []))
     for ax, log in zip(axs, (False, True)):
-        lo, hi = curves["tableLow"], curves["tableHigh"]
+        lo, hi = curves[low], curves[high]
         n = min(len(lo[0]), len(hi[0]))
         ax.fill_between(lo[0][:n], [min(a, b) for a, b in zip(lo[1][:n], hi[1][:n])],
                         [max(a, b) for a, b in zip(lo[1][:n], hi[1][:n])], color="tab:blue", alpha=0.2,
-                        label="CFD table, error band")
+                        label="%s, error band" % LABELS[own])
         for name, style in (("table", "-"), ("sherritt", "--"), ("isolated", ":")):
-            ax.plot(curves[name][0], curves[name][1], style, label=LABELS[name])
+            if name in curves:
+                ax.plot(curves[name][0], curves[name][1], style, label=LABELS[name])
         if tracer:
             ax.plot(tracer[0], tracer[1], "k.", ms=3, label="measured tracer")
         ax.set_xlim(0, right)
@@ -86,14 +95,17 @@ def curve_figure(rows, entry, out):
     import matplotlib.pyplot as plt
     fig, axs = plt.subplots(1, 3, figsize=(15, 4.5))
     values = sorted({r["value"] for r in rows})
+    names = list(dict.fromkeys(r["route"] for r in rows))
+    own, low, high = _primary(names)
     pick = lambda route, col: [next(r[col] for r in rows if r["route"] == route and r["value"] == v) for v in values]
-    axs[1].fill_between(values, pick("tableLow", "mean_residence_time_min"), pick("tableHigh", "mean_residence_time_min"),
-                        color="tab:blue", alpha=0.2, label="CFD table, error band")
+    axs[1].fill_between(values, pick(low, "mean_residence_time_min"), pick(high, "mean_residence_time_min"),
+                        color="tab:blue", alpha=0.2, label="%s, error band" % LABELS[own])
     for name, style in (("table", "-o"), ("sherritt", "--s"), ("isolated", ":^")):
-        axs[0].plot(values, pick(name, "holdup_kg"), style, label=LABELS[name])
-        axs[1].plot(values, pick(name, "mean_residence_time_min"), style, label=LABELS[name])
+        if name in names:
+            axs[0].plot(values, pick(name, "holdup_kg"), style, label=LABELS[name])
+            axs[1].plot(values, pick(name, "mean_residence_time_min"), style, label=LABELS[name])
     for col, style in (("t10_min", "-v"), ("t50_min", "-o"), ("t90_min", "-^")):
-        axs[2].plot(values, pick("table", col), style, label="CFD table, " + col.split("_")[0])
+        axs[2].plot(values, pick(own, col), style, label="%s, %s" % (LABELS[own], col.split("_")[0]))
     for ax, ylabel in zip(axs, ("holdup [kg]", "mean residence time [min]", "RTD quantiles [min]")):
         ax.set_xlabel(entry)
         ax.set_ylabel(ylabel)
@@ -108,14 +120,16 @@ def write(desc, study_dir, rows, error, error_source, plan, curtain_note, curve=
     """report.html (and rtdRoutes.png, profile.png beside it), written whole."""
     import jinja2
     work = os.path.join(study_dir, "routes")
-    rtd_figure(work, desc, os.path.join(study_dir, "rtdRoutes.png"))
-    shutil.copyfile(os.path.join(work, "table", "results", "profile.png"), os.path.join(study_dir, ".profile.png"))
+    names = [r["route"] for r in rows]
+    own, low, high = _primary(names)
+    rtd_figure(work, desc, os.path.join(study_dir, "rtdRoutes.png"), names)
+    shutil.copyfile(os.path.join(work, own, "results", "profile.png"), os.path.join(study_dir, ".profile.png"))
     os.replace(os.path.join(study_dir, ".profile.png"), os.path.join(study_dir, "profile.png"))
     by = {r["route"]: r for r in rows}
-    band = [by["tableLow"]["mean_residence_time_min"], by["tableHigh"]["mean_residence_time_min"]]
+    band = [by[low]["mean_residence_time_min"], by[high]["mean_residence_time_min"]]
     tracer = None
-    tc = os.path.join(work, "table", "results", "tracerComparison.csv")
-    summ = os.path.join(work, "table", "results", "summary.csv")
+    tc = os.path.join(work, own, "results", "tracerComparison.csv")
+    summ = os.path.join(work, own, "results", "summary.csv")
     if desc.tracer() and os.path.isfile(tc):
         with open(tc, newline="") as f:
             m = {r["quantity"]: float(r["measured"]) for r in csv.DictReader(f)}
@@ -127,8 +141,8 @@ def write(desc, study_dir, rows, error, error_source, plan, curtain_note, curve=
                              undefined=jinja2.StrictUndefined)
     html = env.get_template("report.html").render(
         name=os.path.splitext(os.path.basename(desc.path))[0], description=desc.path,
-        written=datetime.date.today().isoformat(), routes=rows, labels=LABELS, table=by["table"],
-        low=by["tableLow"], high=by["tableHigh"], band_lo=min(band), band_hi=max(band), tracer=tracer,
+        written=datetime.date.today().isoformat(), routes=rows, labels=LABELS, own=own, table=by[own],
+        low=by[low], high=by[high], band_lo=min(band), band_hi=max(band), tracer=tracer,
         error=error, error_source=error_source, plan=plan, curtain=curtain_note, defaults=desc.defaults,
         curve=curve)
     for r in rows:

@@ -15,7 +15,6 @@ from ..files import atomic_write
 from ..processes import run_tied
 
 SCORES = os.path.join(PROJECT, "validation", "windTunnelDrift", "results", "scoresBreakdown.csv")
-ROUTE_NAMES = ("table", "sherritt", "isolated", "tableLow", "tableHigh")
 COLUMNS = ["route", "drift", "drift_scale", "holdup_kg", "airborne_fraction", "mean_residence_time_min",
            "rtd_std_min", "t10_min", "t50_min", "t90_min"]
 
@@ -35,11 +34,16 @@ def error_band():
 
 
 def route_settings(table, e):
-    """(name, model.drift, drift section) of every route."""
+    """(name, model.drift, drift section) of every route, the study's own route first
+    and its band last: the CFD table's, or without a table (a scene that needs no
+    curtain run) the lone particles'."""
+    lo, hi = float("%.6g" % math.exp(-e)), float("%.6g" % math.exp(e))
+    if table is None:
+        return [("isolated", "isolated", {}), ("sherritt", "sherritt", {}),
+                ("isolatedLow", "isolated", {"scale": lo}), ("isolatedHigh", "isolated", {"scale": hi})]
     t = {"table": table}
     return [("table", "table", dict(t)), ("sherritt", "sherritt", {}), ("isolated", "isolated", {}),
-            ("tableLow", "table", dict(t, scale=float("%.6g" % math.exp(-e)))),
-            ("tableHigh", "table", dict(t, scale=float("%.6g" % math.exp(e))))]
+            ("tableLow", "table", dict(t, scale=lo)), ("tableHigh", "table", dict(t, scale=hi))]
 
 
 def _row(path):

@@ -76,3 +76,23 @@ def test_the_grid_covers_its_queries(tmp_path):
     assert plan.covers(g, q) == ["spill_rate_kg_m_s"]
     text = plan.sweep_dict(g, d, d.study, str(tmp_path / "t.csv"))
     assert "boxWidth 5;" in text and "gasTemperature 80;" in text and "floors (" in text
+
+
+def _queries(vmax, smax):
+    return {"gas_velocity_m_s": (0.0 if vmax == 0 else 0.5 * vmax, vmax), "spill_rate_kg_m_s": (0.5 * smax, smax),
+            "fall_height_m": (0.5, 4.0), "flight_length_m": (1.133, 1.133),
+            "particle_density_kg_m3": (1590.0, 1590.0), "particle_diameter_m": (6e-4, 9e-4)}
+
+
+def test_the_scene_is_no_more_than_the_drift_needs(tmp_path):
+    d = Description(write(tmp_path, GOOD))
+    # the windTunnel template releases through 0.05 m at 1 m/s: the edge (5.6e-4) at
+    # S = 5.6e-4 x 1590 x 0.05 x 1 = 0.04452 kg/(m s)
+    edge = 5.6e-4 * 1590 * 0.05 * 1.0
+    assert plan.scene(_queries(0.0, 3.0), d)["scene"] == "none"
+    lone = plan.scene(_queries(1.5, 0.99 * edge), d)
+    assert lone["scene"] == "lone" and lone["route"] == "isolated" and "below a curtain's edge" in lone["why"]
+    box = plan.scene(_queries(1.5, 1.01 * edge), d)
+    assert box["scene"] == "box" and box["route"] == "table" and "windTunnel" in box["why"]
+    # a NaN spill is not taken for a dilute one
+    assert plan.scene(_queries(1.5, float("nan")), d)["scene"] == "box"
