@@ -514,6 +514,20 @@ void CompartmentDrumModel::runWith
             disp.coefficient.empty() ? 0.0 : disp.coefficient.size() == 1 ? disp.coefficient[0] : disp.coefficient[i]});
     }
     prof.write(out/"profile.csv");
+    if (s_.partition == "flightModel")
+    {
+        // the flights' unloading (Lee 2008 Ch. 4) in every slice: what the drift model was asked
+        CsvTable unl({"slice", "phi_deg", "root_angle_deg", "flight_holdup_kg", "spill_rate_kg_m_s",
+                      "fall_height_m"});
+        for (int i = 0; i < s_.slices; ++i)
+        {
+            for (const auto& u : data[i].unloading)
+            {
+                unl.addRow({double(i + 1), data[i].phiDeg, u.angleDeg, u.holdupKg, u.spillRate, u.fallHeight});
+            }
+        }
+        unl.write(out/"unloading.csv");
+    }
 
     writeRtdOutputs(c_, rtd.time, rtd.E, measured,
         "compartment model (" + std::to_string(s_.slices) + " slices)", out);

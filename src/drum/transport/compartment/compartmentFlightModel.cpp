@@ -93,6 +93,7 @@ std::vector<LeeSliceData> flightModelSliceData
             const double b = std::min(a + p.angleStepDeg, psi5);
             const ReleaseConditions r = um.at(0.5*(a + b));
             const double w = std::max(um.holdup(a) - um.holdup(b), 0.0);   // mass released
+            s.unloading.push_back({a, um.holdup(a), r.spillRate, r.fallHeight});
             if (w <= 0 || r.fallHeight <= 0) continue;
             for (std::size_t k = 0; k < p.sizes.size(); ++k)
             {

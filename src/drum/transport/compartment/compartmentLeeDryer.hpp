@@ -53,6 +53,11 @@ struct LeeSliceData
     //- Flight model: C_F and C_B of each size class alone (the slice's own
     //  are their feed-weighted sums)
     std::vector<double> classForward, classBack;
+    //- Flight model: the unloading profile (Lee 2008 Ch. 4), one entry per
+    //  release-angle step: root angle (deg), the flight's holdup there (kg per
+    //  flight over the slice length), spill rate (kg/(m s)) and fall height (m)
+    struct UnloadingPoint { double angleDeg, holdupKg, spillRate, fallHeight; };
+    std::vector<UnloadingPoint> unloading;
 };
 
 //- Slice parameters for N slices (Eqs 4.24-4.27 code forms, Eq 3.7-3.8,

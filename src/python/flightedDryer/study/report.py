@@ -87,6 +87,40 @@ def rtd_figure(work, desc, out, names):
     files.save_figure(fig, out, 100)
 
 
+def unloading_figure(results, out):
+    """unloading.png: the flights' unloading (drumSolver's unloading.csv, Lee 2008 Ch. 4)
+    at the feed end, mid-drum and the discharge end: the holdup a flight carries and the
+    spill rate it releases against its root angle. False where the model writes none
+    (the two-phase model's flights are Sherritt's)."""
+    path = os.path.join(results, "unloading.csv")
+    if not os.path.isfile(path):
+        return False
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    slices = sorted({int(float(r["slice"])) for r in rows})
+    if not slices:
+        return False
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axs = plt.subplots(1, 2, figsize=(13, 4.5))
+    for i, label in ((slices[0], "feed end"), (slices[len(slices) // 2], "mid-drum"), (slices[-1], "discharge end")):
+        rs = [r for r in rows if int(float(r["slice"])) == i]
+        a = [float(r["root_angle_deg"]) for r in rs]
+        name = "slice %d, %s (repose %.1f deg)" % (i, label, float(rs[0]["phi_deg"]))
+        axs[0].plot(a, [float(r["flight_holdup_kg"]) for r in rs], label=name)
+        axs[1].plot(a, [float(r["spill_rate_kg_m_s"]) for r in rs], label=name)
+    for ax, ylabel in zip(axs, ("flight holdup [kg per flight and slice]", "spill rate [kg/(m s)]")):
+        ax.set_xlabel("flight root angle from the drum bottom [deg]")
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Flight unloading (Lee 2008 Ch. 4), as the drum model releases the curtains")
+    fig.tight_layout()
+    files.save_figure(fig, out, 100)
+    return True
+
+
 def curve_figure(rows, entry, out):
     """curve.png: holdup, mean residence time (with the error band) and the RTD's
     quantiles of every route against the curve's input."""
@@ -125,6 +159,7 @@ def write(desc, study_dir, rows, error, error_source, plan, curtain_note, curve=
     rtd_figure(work, desc, os.path.join(study_dir, "rtdRoutes.png"), names)
     shutil.copyfile(os.path.join(work, own, "results", "profile.png"), os.path.join(study_dir, ".profile.png"))
     os.replace(os.path.join(study_dir, ".profile.png"), os.path.join(study_dir, "profile.png"))
+    unloading = unloading_figure(os.path.join(work, own, "results"), os.path.join(study_dir, "unloading.png"))
     by = {r["route"]: r for r in rows}
     band = [by[low]["mean_residence_time_min"], by[high]["mean_residence_time_min"]]
     tracer = None
@@ -144,7 +179,7 @@ def write(desc, study_dir, rows, error, error_source, plan, curtain_note, curve=
         written=datetime.date.today().isoformat(), routes=rows, labels=LABELS, own=own, table=by[own],
         low=by[low], high=by[high], band_lo=min(band), band_hi=max(band), tracer=tracer,
         error=error, error_source=error_source, plan=plan, curtain=curtain_note, defaults=desc.defaults,
-        curve=curve)
+        curve=curve, unloading=unloading)
     for r in rows:
         for k, v in r.items():
             if isinstance(v, float) and not math.isfinite(v):
