@@ -6,13 +6,13 @@ import hashlib
 import os
 import re
 
-from .. import PROJECT
+from .. import PROJECT, facts
 from ..errors import InputError
 
 TOOL = "drumSegmentCase"
 FLAGS = {"-meshOnly", "-check"}
 VALUED = {"-dict", "-out", "-level", "-ends", "-gasVelocity", "-reposeAngle", "-length", "-np", "-steps",
-          "-template", "-release"}
+          "-template", "-release", "-drag"}
 NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
 
 
@@ -23,7 +23,7 @@ def parse(argv, usage):
     o = {"dict": "", "out": "", "level": "coarse", "ends": "periodic", "gasVelocity": "", "reposeAngle": "",
          "length": "1.133", "np": "1", "steps": "", "template": os.path.join(PROJECT, "etc", "templates",
                                                                             "curtain", "drumSegment"),
-         "release": "", "meshOnly": False, "check": False}
+         "release": "", "drag": "SchillerNaumann", "meshOnly": False, "check": False}
     i = 0
     while i < len(argv):
         a = argv[i]
@@ -78,6 +78,9 @@ def check(o):
     if o["release"] and not re.fullmatch(r"tip[0-9]{2,}(,tip[0-9]{2,})*", o["release"]):
         raise InputError("-release '%s': tip patch names tipNN, separated by commas (mesh/flights.csv)"
                          % o["release"])
+    laws = facts.drag_laws()
+    if o["drag"] not in laws:
+        raise InputError("-drag '%s' is not one of %s" % (o["drag"], " ".join(laws)))
     for d in ("0.orig", "constant", "system"):
         if not os.path.isdir(os.path.join(o["template"], d)):
             raise InputError("-template %s: no %s/ (a case template: 0.orig, constant, system)"
@@ -104,6 +107,9 @@ def signature(o):
     text = ("level=%s ends=%s gasVelocity=%s reposeAngle=%s length=%s steps=%s meshOnly=%s release=%s\n"
             % (o["level"], o["ends"], o["gasVelocity"], o["reposeAngle"], o["length"], o["steps"],
                1 if o["meshOnly"] else 0, o["release"]))
+    if o["drag"] != "SchillerNaumann":
+        # (the default leaves the signature of runs made before the option as it was)
+        text += "drag=%s\n" % o["drag"]
     text += "%s  -\n" % _sha1_file(o["dict"])
     files = []
     for root, _, names in os.walk(o["template"]):

@@ -186,7 +186,7 @@ def curtains(o, run, R, steps, say):
     with open(os.path.join(case, "constant", "curtainProperties"), "w") as f:
         f.write("FoamFile { version 2.0; format ascii; class dictionary; object curtainProperties; }\n"
                 "// written by %s: one class per releasing flight (mesh/flights.csv)\n"
-                "continuousPhase air;\ndrag { type SchillerNaumann; }\nparticles\n{\n" % TOOL
+                "continuousPhase air;\ndrag { type %s; }\nparticles\n{\n" % (TOOL, o["drag"])
                 + "".join("    %s { d %s; rho %s; }\n" % (c, v["diameter"], v["rhoP"]) for c in tips)
                 + "}\nalphaMax        0.62;\n")
     spills = {r[8]: r[10] for r in flights(run)}

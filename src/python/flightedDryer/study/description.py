@@ -8,7 +8,7 @@ import os
 
 import yaml
 
-from .. import PROJECT
+from .. import PROJECT, facts
 from ..errors import InputError
 
 DRUM_SECTIONS = ("drum", "flights", "material", "gas", "model", "rtd")
@@ -16,6 +16,8 @@ STUDY_KEYS = {
     # key: (default, check, meaning for the report)
     "scene": ("box", ("box",), "curtain scene: a box as wide as the drum"),
     "level": ("coarse", ("coarse", "medium", "fine"), "curtain mesh level"),
+    # (the drag laws are the C++ side's: facts.drag_laws, asked when a description is read)
+    "drag": ("SchillerNaumann", "dragLaws", "the particles' drag law in the curtain runs"),
     "iterations": (300, (30, 100000), "curtain iterations per run (the steady stop comes first)"),
     "margin": (0.25, (0.0, 2.0), "share the table's grid reaches beyond the drum model's queries"),
     "table": (None, None, "a drift table to use instead of sweeping one"),
@@ -119,6 +121,8 @@ class Description:
                     self.defaults.append(("study." + key, default, meaning))
                 continue
             v = given[key]
+            if check == "dragLaws":
+                check = facts.drag_laws()
             if isinstance(check, tuple) and check and isinstance(check[0], str):
                 if v not in check:
                     raise InputError("%s = '%s' is not one of %s%s" % (self.where("study." + key), v, " ".join(check),

@@ -172,7 +172,7 @@ def run(opts, children):
     curtain = _curtain(g, out) if g else None
     planned = {"scene": sc["scene"], "why": sc["why"], "runs": info["runs"], "estimate_s": info["estimate_s"], "swept": wall is not None,
                "wall_s": wall or 0.0, "source": table,
-               "level": study["level"], "box": "%g" % plan.box_width(desc),
+               "level": study["level"], "drag": study["drag"], "box": "%g" % plan.box_width(desc),
                "gas_t": "%g" % plan.gas_temperature(desc),
                "gas": g and " ".join("%g" % v for v in g["gasVelocity"]),
                "spill": g and " ".join("%g" % v for v in g["spillRate"]),

@@ -204,7 +204,7 @@ def sweep_dict(g, desc, study, output):
     gas = desc.sections["gas"]
     lines = ["FoamFile { version 2.0; format ascii; class dictionary; object dryerStudyTable; }",
              "// written by dryerStudy from %s" % desc.path,
-             'template "%s";' % g["template"], "level %s;" % study["level"],
+             'template "%s";' % g["template"], "level %s;" % study["level"], "drag %s;" % study["drag"],
              "iterations %d;" % study["iterations"],
              "gasTemperature %.6g;" % gas_temperature(desc)]
     if "pressure_kPa" in gas:

@@ -170,6 +170,7 @@ def read_segment_sweep(d):
     s["template"] = d.folder("template", SEGMENT_TEMPLATE)
     s["level"] = d.word("level", "coarse", allowed=["coarse", "medium", "fine"])
     s["ends"] = d.word("ends", "periodic", allowed=["periodic", "open"])
+    s["drag"] = d.word("drag", "SchillerNaumann", allowed=list(facts.drag_laws()))
     s["iterations"] = d.whole("iterations", 30, 100000, multiple=3,
                               why=": the results are the means over the last third")
     s["segmentLength"] = None

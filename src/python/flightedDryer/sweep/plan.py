@@ -28,6 +28,8 @@ def segment_cases(s):
                 "-gasVelocity", g6(V), "-level", s["level"], "-ends", s["ends"]]
         if s["iterations"]:
             args += ["-iterations", str(s["iterations"])]
+        if s["drag"] != "SchillerNaumann":
+            args += ["-drag", s["drag"]]
         if s["segmentLength"] is not None:
             args += ["-segmentLength", "%.12g" % s["segmentLength"]]
         if os.path.realpath(s["template"]) != os.path.realpath(os.path.join(PROJECT, SEGMENT_TEMPLATE)):
