@@ -6,10 +6,9 @@
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
 #include "wordRes.H"
+#include "exactText.H"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace Foam
 {
@@ -26,43 +25,14 @@ namespace runTimeControls
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::string Foam::functionObjects::runTimeControls::steadyWindow::exact
-(
-    const scalar x
-)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof(buf), "%a", double(x));
-    return string(buf);
-}
-
-
-Foam::scalar Foam::functionObjects::runTimeControls::steadyWindow::fromExact
-(
-    const string& s
-)
-{
-    char* end = nullptr;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0')
-    {
-        FatalErrorInFunction
-            << "steadyWindow: state value '" << s << "' is not a number"
-            << " (uniform/functionObjects/functionObjectProperties of the"
-            << " start time)" << exit(FatalError);
-    }
-    return x;
-}
-
-
 void Foam::functionObjects::runTimeControls::steadyWindow::storeState()
 {
     dictionary& d = conditionDict();
-    d.set("firstTime", exact(firstTime_));
+    d.set("firstTime", exactText::write(firstTime_));
     List<string> t(times_.size());
     forAll(times_, i)
     {
-        t[i] = exact(times_[i]);
+        t[i] = exactText::write(times_[i]);
     }
     d.set("times", t);
     forAll(fieldNames_, fieldi)
@@ -70,7 +40,7 @@ void Foam::functionObjects::runTimeControls::steadyWindow::storeState()
         List<string> v(values_[fieldi].size());
         forAll(v, i)
         {
-            v[i] = exact(values_[fieldi][i]);
+            v[i] = exactText::write(values_[fieldi][i]);
         }
         d.set(fieldNames_[fieldi], v);
     }
@@ -84,12 +54,12 @@ void Foam::functionObjects::runTimeControls::steadyWindow::restoreState()
     {
         return;
     }
-    firstTime_ = fromExact(d.get<string>("firstTime"));
+    firstTime_ = exactText::read(d.get<string>("firstTime"), "steadyWindow " + name_);
     const List<string> t(d.get<List<string>>("times"));
     times_.clear();
     for (const string& s : t)
     {
-        times_.append(fromExact(s));
+        times_.append(exactText::read(s, "steadyWindow " + name_));
     }
     forAll(fieldNames_, fieldi)
     {
@@ -107,7 +77,7 @@ void Foam::functionObjects::runTimeControls::steadyWindow::restoreState()
         }
         for (const string& s : d.get<List<string>>(fieldNames_[fieldi]))
         {
-            values_[fieldi].append(fromExact(s));
+            values_[fieldi].append(exactText::read(s, "steadyWindow " + name_));
         }
         if (values_[fieldi].size() != times_.size())
         {

@@ -12,7 +12,8 @@ from ..errors import InputError
 SEGMENT_OPTIONS = {"-dir": "-out", "-flights": "-dict", "-gasVelocity": "-gasVelocity",
                    "-reposeAngle": "-reposeAngle", "-level": "-level", "-np": "-np",
                    "-iterations": "-steps", "-ends": "-ends", "-segmentLength": "-length",
-                   "-template": "-template", "-release": "-release", "-drag": "-drag"}
+                   "-template": "-template", "-release": "-release", "-drag": "-drag",
+                   "-stop": "-stop"}
 BOX_ONLY = {"-spillRate": "every flight's spill rate comes from the flight model (mesh/flights.csv)",
             "-fallHeight": "every flight's fall height comes from the flight model (mesh/flights.csv)",
             "-heights": "each curtain falls to the bed, measured where it lands",

@@ -12,7 +12,7 @@ from ..errors import InputError
 TOOL = "drumSegmentCase"
 FLAGS = {"-meshOnly", "-check"}
 VALUED = {"-dict", "-out", "-level", "-ends", "-gasVelocity", "-reposeAngle", "-length", "-np", "-steps",
-          "-template", "-release", "-drag"}
+          "-template", "-release", "-drag", "-stop"}
 NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
 
 
@@ -23,7 +23,7 @@ def parse(argv, usage):
     o = {"dict": "", "out": "", "level": "coarse", "ends": "periodic", "gasVelocity": "", "reposeAngle": "",
          "length": "1.133", "np": "1", "steps": "", "template": os.path.join(PROJECT, "etc", "templates",
                                                                             "curtain", "drumSegment"),
-         "release": "", "drag": "SchillerNaumann", "meshOnly": False, "check": False}
+         "release": "", "drag": "SchillerNaumann", "stop": "", "meshOnly": False, "check": False}
     i = 0
     while i < len(argv):
         a = argv[i]
@@ -78,6 +78,12 @@ def check(o):
     if o["release"] and not re.fullmatch(r"tip[0-9]{2,}(,tip[0-9]{2,})*", o["release"]):
         raise InputError("-release '%s': tip patch names tipNN, separated by commas (mesh/flights.csv)"
                          % o["release"])
+    if o["stop"] not in ("", "statistical", "fixed"):
+        raise InputError("-stop '%s': statistical or fixed" % o["stop"])
+    if o["stop"] == "statistical" and o["ends"] != "periodic":
+        raise InputError("-stop statistical needs -ends periodic (open ends have a steady state: fixed)")
+    # periodic ends stop when their means are known; open ends run their steps
+    o["stop"] = o["stop"] or ("statistical" if o["ends"] == "periodic" else "fixed")
     laws = facts.drag_laws()
     if o["drag"] not in laws:
         raise InputError("-drag '%s' is not one of %s" % (o["drag"], " ".join(laws)))
@@ -107,6 +113,8 @@ def signature(o):
     text = ("level=%s ends=%s gasVelocity=%s reposeAngle=%s length=%s steps=%s meshOnly=%s release=%s\n"
             % (o["level"], o["ends"], o["gasVelocity"], o["reposeAngle"], o["length"], o["steps"],
                1 if o["meshOnly"] else 0, o["release"]))
+    if o["stop"] == "statistical":
+        text += "stop=statistical\n"
     if o["drag"] != "SchillerNaumann":
         # (the default leaves the signature of runs made before the option as it was)
         text += "drag=%s\n" % o["drag"]

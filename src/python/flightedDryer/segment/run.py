@@ -6,6 +6,7 @@ and segmentResults (curtains.csv, section.png)."""
 
 import csv
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -134,6 +135,34 @@ def last_line_sub(text, entry):
     return "\n".join(lines)
 
 
+def statistics_window(case):
+    """The averaging window (local steps) of a run stopped by its statistics (the
+    batchMeans conditions of the template's `statistics`: the last whole batches
+    up to the final step) and a line saying whether the means were known to
+    their tolerance or the run reached its cap."""
+    times = [d for d in os.listdir(case) if re.fullmatch(r"[0-9]+", d)]
+    last = max(int(t) for t in times)
+    props = os.path.join(case, str(last), "uniform", "functionObjects", "functionObjectProperties")
+    try:
+        start = float(fd.value(props, "statistics/results/statistics/scalar/vc_windowStart"))
+        batches = int(float(fd.value(props, "statistics/results/statistics/scalar/vc_batches")))
+        se = [float(fd.value(props, "statistics/results/statistics/scalar/%s_se" % k))
+              for k in ("vc_VcByVg", "drift_drift_bulk")]
+        mean = [float(fd.value(props, "statistics/results/statistics/scalar/%s_mean" % k))
+                for k in ("vc_VcByVg", "drift_drift_bulk")]
+        known = all(float(fd.value(props, "statistics/results/statistics/scalar/%s_known" % k)) == 1
+                    for k in ("vc", "drift"))
+    except fd.FoamDictionaryError as e:
+        raise RunError("%s: the statistics' window is not recorded (%s)" % (props, e))
+    window = last - int(round(start))
+    if not window > 0:
+        raise RunError("%s: no whole batch of statistics by step %d (the cap, -steps, is too small)" % (props, last))
+    return window, ("statistics: %s at step %d; means over the last %d steps (%d batches): V_c/V_g %.4g +- %.2g, "
+                    "drift %.4g +- %.2g m (standard errors)"
+                    % ("means known to their tolerance" if known else "the cap reached before the means were known",
+                       last, window, batches, mean[0], se[0], mean[1], se[1]))
+
+
 def curtains(o, run, R, steps, say):
     """One class per releasing flight, released through its tipNN patch at the
     flight's spill rate; curtainFoam in local time steps; the results. Returns the
@@ -154,7 +183,13 @@ def curtains(o, run, R, steps, say):
     if o["steps"]:
         end = int(o["steps"])
     fd.set_value(cd, "endTime", str(end))
-    fd.set_value(cd, "writeInterval", str(end // 3))
+    if o["stop"] == "statistical":
+        # the statistics' batches (one swing each) are the restart points too
+        batch = int(float(fd.value(cd, "functions/statistics/conditions/vc/batch")))
+        fd.set_value(cd, "writeInterval", str(batch))
+    else:
+        fd.remove(cd, "functions/statistics")
+        fd.set_value(cd, "writeInterval", str(end // 3))
     zmid = g6(float(o["length"]) / 2)     # the mid-segment section
     shutil.copytree(os.path.join(o["template"], "constant"), os.path.join(case, "constant"), dirs_exist_ok=True)
     if os.path.exists(os.path.join(case, "constant", "fvOptions.periodic")):
@@ -226,7 +261,11 @@ def curtains(o, run, R, steps, say):
     if balance:
         print("   " + balance[-1].lstrip().rstrip("\n"))
     steps("foamToVTK.curtains", ["foamToVTK", "-case", "case", "-latestTime", "-noFunctionObjects"])
-    steps("segmentResults", [RESULTS, run, str(end // 3)])
+    window = end // 3
+    if o["stop"] == "statistical":
+        window, note = statistics_window(case)
+        print("   " + note, flush=True)
+    steps("segmentResults", [RESULTS, run, str(window)])
     r = subprocess.run(["column", "-s,", "-t"], stdin=open(os.path.join(run, "curtains.csv")),
                        capture_output=True, text=True)
     print("".join("   " + line + "\n" for line in r.stdout.splitlines()), end="", flush=True)

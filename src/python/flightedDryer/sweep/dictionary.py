@@ -171,8 +171,14 @@ def read_segment_sweep(d):
     s["level"] = d.word("level", "coarse", allowed=["coarse", "medium", "fine"])
     s["ends"] = d.word("ends", "periodic", allowed=["periodic", "open"])
     s["drag"] = d.word("drag", "SchillerNaumann", allowed=list(facts.drag_laws()))
+    # periodic ends stop when their means are known (drumSegmentCase -stop statistical)
+    s["stop"] = d.word("stop", "statistical" if s["ends"] == "periodic" else "fixed",
+                       allowed=["statistical", "fixed"])
+    if s["stop"] == "statistical" and s["ends"] != "periodic":
+        raise InputError("%s: entry 'stop' statistical needs ends periodic (open ends have a steady state)"
+                         % d.where("stop"))
     s["iterations"] = d.whole("iterations", 30, 100000, multiple=3,
-                              why=": the results are the means over the last third")
+                              why=": the most steps; with stop fixed the means over the last third")
     s["segmentLength"] = None
     if d.has("segmentLength"):
         s["segmentLength"] = d.scalar("segmentLength", 0.1, 100, "m")

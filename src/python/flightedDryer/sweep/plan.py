@@ -30,6 +30,8 @@ def segment_cases(s):
             args += ["-iterations", str(s["iterations"])]
         if s["drag"] != "SchillerNaumann":
             args += ["-drag", s["drag"]]
+        if s["stop"] == "fixed" and s["ends"] == "periodic":
+            args += ["-stop", "fixed"]
         if s["segmentLength"] is not None:
             args += ["-segmentLength", "%.12g" % s["segmentLength"]]
         if os.path.realpath(s["template"]) != os.path.realpath(os.path.join(PROJECT, SEGMENT_TEMPLATE)):

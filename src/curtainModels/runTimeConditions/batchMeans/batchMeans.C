@@ -1,0 +1,306 @@
+/*---------------------------------------------------------------------------*\
+  flightedDryer: OpenFOAM library for falling curtains in flighted dryers
+\*---------------------------------------------------------------------------*/
+
+#include "batchMeans.H"
+#include "addToRunTimeSelectionTable.H"
+#include "Time.H"
+#include "exactText.H"
+
+#include <cmath>
+
+namespace Foam
+{
+namespace functionObjects
+{
+namespace runTimeControls
+{
+    defineTypeNameAndDebug(batchMeans, 0);
+    addToRunTimeSelectionTable(runTimeCondition, batchMeans, dictionary);
+}
+}
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::functionObjects::runTimeControls::batchMeans::storeState()
+{
+    dictionary& d = conditionDict();
+    List<string> t(times_.size());
+    forAll(times_, i)
+    {
+        t[i] = exactText::write(times_[i]);
+    }
+    d.set("times", t);
+    forAll(fieldNames_, fieldi)
+    {
+        List<string> v(values_[fieldi].size());
+        forAll(v, i)
+        {
+            v[i] = exactText::write(values_[fieldi][i]);
+        }
+        d.set(fieldNames_[fieldi], v);
+    }
+}
+
+
+void Foam::functionObjects::runTimeControls::batchMeans::restoreState()
+{
+    const dictionary& d = conditionDict();
+    if (!d.found("times"))
+    {
+        return;
+    }
+    const word owner("batchMeans " + name_);
+    times_.clear();
+    for (const string& s : d.get<List<string>>("times"))
+    {
+        times_.append(exactText::read(s, owner));
+    }
+    forAll(fieldNames_, fieldi)
+    {
+        values_[fieldi].clear();
+        if (!d.found(fieldNames_[fieldi]))
+        {
+            // the field list changed since the state was written: start over
+            times_.clear();
+            for (auto& v : values_)
+            {
+                v.clear();
+            }
+            return;
+        }
+        for (const string& s : d.get<List<string>>(fieldNames_[fieldi]))
+        {
+            values_[fieldi].append(exactText::read(s, owner));
+        }
+        if (values_[fieldi].size() != times_.size())
+        {
+            FatalErrorInFunction
+                << owner << ": the stored state has " << values_[fieldi].size()
+                << " values of " << fieldNames_[fieldi] << " for "
+                << times_.size() << " sample times" << exit(FatalError);
+        }
+    }
+}
+
+
+bool Foam::functionObjects::runTimeControls::batchMeans::result
+(
+    const word& entry,
+    scalar& value
+) const
+{
+    return state_.getObjectResult<scalar>(functionObjectName_, entry, value);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::functionObjects::runTimeControls::batchMeans::batchMeans
+(
+    const word& name,
+    const objectRegistry& obr,
+    const dictionary& dict,
+    stateFunctionObject& state
+)
+:
+    runTimeCondition(name, obr, dict, state),
+    functionObjectName_(dict.get<word>("functionObject")),
+    fieldNames_(dict.get<wordList>("fields")),
+    batch_(dict.get<scalar>("batch")),
+    minBatches_(dict.get<label>("minBatches")),
+    tolerance_(dict.get<scalar>("tolerance")),
+    absTolerance_(dict.getOrDefault<scalar>("absTolerance", 0)),
+    startTime_(dict.getOrDefault<scalar>("startTime", -GREAT)),
+    times_(),
+    values_(fieldNames_.size())
+{
+    // A misspelt entry would silently be ignored: refuse it
+    const wordList allowed
+    ({
+        "type", "functionObject", "fields", "batch", "minBatches", "tolerance",
+        "absTolerance", "startTime", "groupID", "active", "log"
+    });
+    for (const word& key : dict.toc())
+    {
+        if (!allowed.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "batchMeans " << name << ": unknown entry '" << key
+                << "'; allowed entries: " << allowed << exit(FatalIOError);
+        }
+    }
+    if (fieldNames_.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "batchMeans " << name << ": entry 'fields' is empty"
+            << exit(FatalIOError);
+    }
+    if (!(batch_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "batchMeans " << name << ": entry 'batch' = " << batch_
+            << " outside the allowed range (0, inf)" << exit(FatalIOError);
+    }
+    if (minBatches_ < 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "batchMeans " << name << ": entry 'minBatches' = " << minBatches_
+            << " outside the allowed range [2, inf) (a standard error needs"
+            << " two batches)" << exit(FatalIOError);
+    }
+    if (!(tolerance_ >= 0) || !(absTolerance_ >= 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "batchMeans " << name << ": entries 'tolerance' = "
+            << tolerance_ << " and 'absTolerance' = " << absTolerance_
+            << " must be in [0, inf)" << exit(FatalIOError);
+    }
+
+    restoreState();
+}
+
+
+// * * * * * * * * * * * * * * Public Member Functions * * * * * * * * * * * //
+
+bool Foam::functionObjects::runTimeControls::batchMeans::apply()
+{
+    if (!active_)
+    {
+        return true;
+    }
+
+    const scalar t = obr_.time().value();
+    const scalar eps = 1e-9*max(scalar(1), mag(t));
+
+    // a sample of this time already taken (runTimeControl may be executed
+    // twice at the final time)
+    if (times_.size() && mag(times_.last() - t) <= eps)
+    {
+        times_.remove();
+        for (auto& v : values_)
+        {
+            v.remove();
+        }
+    }
+    if (t <= startTime_ + eps)
+    {
+        return false;
+    }
+
+    List<scalar> now(fieldNames_.size(), Zero);
+    forAll(fieldNames_, fieldi)
+    {
+        if (!result(fieldNames_[fieldi], now[fieldi]))
+        {
+            WarningInFunction
+                << "batchMeans " << name_ << ": function object "
+                << functionObjectName_ << " has published no result '"
+                << fieldNames_[fieldi] << "' (yet)" << endl;
+            return false;
+        }
+    }
+    times_.append(t);
+    forAll(fieldNames_, fieldi)
+    {
+        values_[fieldi].append(now[fieldi]);
+    }
+    storeState();
+
+    // the last nb whole batches, counted back from t: samples in (t - nb b, t]
+    const label nb = label(std::floor((t - startTime_ + eps)/batch_));
+    const scalar from = t - nb*batch_;
+    bool satisfied = nb >= minBatches_;
+    scalar worst = 0;
+    word worstField;
+    List<scalar> means(fieldNames_.size(), Zero), ses(fieldNames_.size(), Zero);
+    forAll(fieldNames_, fieldi)
+    {
+        List<scalar> sum(max(nb, label(0)), Zero);
+        List<label> count(max(nb, label(0)), 0);
+        bool finite = true;
+        forAll(times_, i)
+        {
+            if (times_[i] <= from + eps)
+            {
+                continue;
+            }
+            const label j = min(nb - 1, label(std::floor((times_[i] - from - eps)/batch_)));
+            sum[j] += values_[fieldi][i];
+            ++count[j];
+            finite = finite && std::isfinite(values_[fieldi][i]);
+        }
+        scalar mean = 0;
+        label filled = 0;
+        forAll(sum, j)
+        {
+            if (count[j])
+            {
+                sum[j] /= count[j];
+                mean += sum[j];
+                ++filled;
+            }
+        }
+        if (filled < 2 || filled != nb)
+        {
+            satisfied = false;
+            means[fieldi] = ses[fieldi] = GREAT;
+            continue;
+        }
+        mean /= filled;
+        scalar ss = 0;
+        forAll(sum, j)
+        {
+            ss += sqr(sum[j] - mean);
+        }
+        const scalar se = std::sqrt(ss/(filled*(filled - 1)));
+        means[fieldi] = mean;
+        ses[fieldi] = se;
+        const scalar allowed = max(tolerance_*mag(mean), absTolerance_);
+        const scalar ratio = finite ? se/max(allowed, VSMALL) : GREAT;
+        if (ratio > worst)
+        {
+            worst = ratio;
+            worstField = fieldNames_[fieldi];
+        }
+        if (!finite || !(se <= allowed))
+        {
+            satisfied = false;
+        }
+    }
+
+    // the window, for whatever reads the run: the same samples
+    state_.setResult(name_ + "_windowStart", from);
+    state_.setResult(name_ + "_batches", scalar(nb));
+    state_.setResult(name_ + "_known", scalar(satisfied ? 1 : 0));
+    forAll(fieldNames_, fieldi)
+    {
+        state_.setResult(name_ + "_" + fieldNames_[fieldi] + "_mean", means[fieldi]);
+        state_.setResult(name_ + "_" + fieldNames_[fieldi] + "_se", ses[fieldi]);
+    }
+
+    if (log)
+    {
+        Info<< "    " << type() << ": " << name_ << ": " << nb
+            << " batches of " << batch_ << " from " << from;
+        if (worstField.size())
+        {
+            Info<< "; largest standard error " << worst << " x allowed ("
+                << worstField << ")";
+        }
+        Info<< (satisfied ? "; mean known" : "") << nl;
+    }
+
+    return satisfied;
+}
+
+
+void Foam::functionObjects::runTimeControls::batchMeans::write()
+{
+    storeState();
+}
+
+
+// ************************************************************************* //
