@@ -212,15 +212,13 @@ bool Foam::functionObjects::runTimeControls::batchMeans::apply()
     // the last nb whole batches, counted back from t: samples in (t - nb b, t]
     const label nb = label(std::floor((t - startTime_ + eps)/batch_));
     const scalar from = t - nb*batch_;
-    bool satisfied = nb >= minBatches_;
-    scalar worst = 0;
-    word worstField;
-    List<scalar> means(fieldNames_.size(), Zero), ses(fieldNames_.size(), Zero);
+    // batch means of every field, in time order
+    List<List<scalar>> m(fieldNames_.size(), List<scalar>(max(nb, label(0)), Zero));
+    bool complete = nb >= 2;
+    bool finite = true;
     forAll(fieldNames_, fieldi)
     {
-        List<scalar> sum(max(nb, label(0)), Zero);
         List<label> count(max(nb, label(0)), 0);
-        bool finite = true;
         forAll(times_, i)
         {
             if (times_[i] <= from + eps)
@@ -228,52 +226,89 @@ bool Foam::functionObjects::runTimeControls::batchMeans::apply()
                 continue;
             }
             const label j = min(nb - 1, label(std::floor((times_[i] - from - eps)/batch_)));
-            sum[j] += values_[fieldi][i];
+            m[fieldi][j] += values_[fieldi][i];
             ++count[j];
             finite = finite && std::isfinite(values_[fieldi][i]);
         }
-        scalar mean = 0;
-        label filled = 0;
-        forAll(sum, j)
+        forAll(count, j)
         {
             if (count[j])
             {
-                sum[j] /= count[j];
-                mean += sum[j];
-                ++filled;
+                m[fieldi][j] /= count[j];
+            }
+            else
+            {
+                complete = false;
             }
         }
-        if (filled < 2 || filled != nb)
+    }
+    // the start-up transient: the first d batches are dropped, d <= nb/2 the
+    // MSER truncation (White 1997: least sum (m_j - mean)^2/(n - d)^2 over
+    // the batches kept), the largest d of the fields (one window for all)
+    label drop = 0;
+    if (complete)
+    {
+        forAll(fieldNames_, fieldi)
         {
-            satisfied = false;
-            means[fieldi] = ses[fieldi] = GREAT;
-            continue;
+            scalar best = GREAT;
+            label bestD = 0;
+            for (label d = 0; d <= nb/2; ++d)
+            {
+                const label n = nb - d;
+                scalar mean = 0;
+                for (label j = d; j < nb; ++j) mean += m[fieldi][j];
+                mean /= n;
+                scalar ss = 0;
+                for (label j = d; j < nb; ++j) ss += sqr(m[fieldi][j] - mean);
+                const scalar z = ss/sqr(scalar(n));
+                if (z < best)
+                {
+                    best = z;
+                    bestD = d;
+                }
+            }
+            drop = max(drop, bestD);
         }
-        mean /= filled;
-        scalar ss = 0;
-        forAll(sum, j)
+    }
+    const label kept = nb - drop;
+    const scalar windowStart = from + drop*batch_;
+    bool satisfied = complete && finite && kept >= minBatches_;
+    scalar worst = 0;
+    word worstField;
+    List<scalar> means(fieldNames_.size(), GREAT), ses(fieldNames_.size(), GREAT);
+    if (complete && kept >= 2)
+    {
+        forAll(fieldNames_, fieldi)
         {
-            ss += sqr(sum[j] - mean);
+            scalar mean = 0;
+            for (label j = drop; j < nb; ++j) mean += m[fieldi][j];
+            mean /= kept;
+            scalar ss = 0;
+            for (label j = drop; j < nb; ++j) ss += sqr(m[fieldi][j] - mean);
+            const scalar se = std::sqrt(ss/(kept*(kept - 1)));
+            means[fieldi] = mean;
+            ses[fieldi] = se;
+            const scalar allowed = max(tolerance_*mag(mean), absTolerance_);
+            const scalar ratio = finite ? se/max(allowed, VSMALL) : GREAT;
+            if (ratio > worst)
+            {
+                worst = ratio;
+                worstField = fieldNames_[fieldi];
+            }
+            if (!finite || !(se <= allowed))
+            {
+                satisfied = false;
+            }
         }
-        const scalar se = std::sqrt(ss/(filled*(filled - 1)));
-        means[fieldi] = mean;
-        ses[fieldi] = se;
-        const scalar allowed = max(tolerance_*mag(mean), absTolerance_);
-        const scalar ratio = finite ? se/max(allowed, VSMALL) : GREAT;
-        if (ratio > worst)
-        {
-            worst = ratio;
-            worstField = fieldNames_[fieldi];
-        }
-        if (!finite || !(se <= allowed))
-        {
-            satisfied = false;
-        }
+    }
+    else
+    {
+        satisfied = false;
     }
 
     // the window, for whatever reads the run: the same samples
-    state_.setResult(name_ + "_windowStart", from);
-    state_.setResult(name_ + "_batches", scalar(nb));
+    state_.setResult(name_ + "_windowStart", windowStart);
+    state_.setResult(name_ + "_batches", scalar(kept));
     state_.setResult(name_ + "_known", scalar(satisfied ? 1 : 0));
     forAll(fieldNames_, fieldi)
     {
@@ -284,7 +319,8 @@ bool Foam::functionObjects::runTimeControls::batchMeans::apply()
     if (log)
     {
         Info<< "    " << type() << ": " << name_ << ": " << nb
-            << " batches of " << batch_ << " from " << from;
+            << " batches of " << batch_ << " from " << from << ", the first "
+            << drop << " dropped (start-up)";
         if (worstField.size())
         {
             Info<< "; largest standard error " << worst << " x allowed ("

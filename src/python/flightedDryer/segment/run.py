@@ -5,6 +5,7 @@ particle class per releasing flight, curtainFoam in local time steps, foamToVTK
 and segmentResults (curtains.csv, section.png)."""
 
 import csv
+import math
 import os
 import re
 import shutil
@@ -137,21 +138,25 @@ def last_line_sub(text, entry):
 
 def statistics_window(case):
     """The averaging window (local steps) of a run stopped by its statistics (the
-    batchMeans conditions of the template's `statistics`: the last whole batches
-    up to the final step) and a line saying whether the means were known to
-    their tolerance or the run reached its cap."""
+    batchMeans conditions vc and drift of the template's `statistics`: the whole
+    batches kept after the start-up, up to the final step; the shorter of the two
+    windows) and a line saying whether the means were known to their tolerance or
+    the run reached its cap."""
     times = [d for d in os.listdir(case) if re.fullmatch(r"[0-9]+", d)]
     last = max(int(t) for t in times)
     props = os.path.join(case, str(last), "uniform", "functionObjects", "functionObjectProperties")
+
+    def result(key):
+        v = float(fd.value(props, "results/statistics/scalar/" + key))
+        if not math.isfinite(v):
+            raise RunError("%s: statistics result %s is %s" % (props, key, v))
+        return v
     try:
-        start = float(fd.value(props, "statistics/results/statistics/scalar/vc_windowStart"))
-        batches = int(float(fd.value(props, "statistics/results/statistics/scalar/vc_batches")))
-        se = [float(fd.value(props, "statistics/results/statistics/scalar/%s_se" % k))
-              for k in ("vc_VcByVg", "drift_drift_bulk")]
-        mean = [float(fd.value(props, "statistics/results/statistics/scalar/%s_mean" % k))
-                for k in ("vc_VcByVg", "drift_drift_bulk")]
-        known = all(float(fd.value(props, "statistics/results/statistics/scalar/%s_known" % k)) == 1
-                    for k in ("vc", "drift"))
+        start = max(result("vc_windowStart"), result("drift_windowStart"))
+        batches = int(min(result("vc_batches"), result("drift_batches")))
+        se = [result(k + "_se") for k in ("vc_VcByVg", "drift_drift_bulk")]
+        mean = [result(k + "_mean") for k in ("vc_VcByVg", "drift_drift_bulk")]
+        known = all(result(k + "_known") == 1 for k in ("vc", "drift"))
     except fd.FoamDictionaryError as e:
         raise RunError("%s: the statistics' window is not recorded (%s)" % (props, e))
     window = last - int(round(start))
