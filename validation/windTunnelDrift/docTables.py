@@ -358,3 +358,34 @@ def invictaDrift(results):
     (m, s), = meas
     out.append("| measured (Lee's tracer) | | | %s | %s |" % (_f(m, "%.2f"), _f(s, "%.2f")))
     return "\n".join(out)
+
+
+SHALE = RES + "/shaleSensitivity"
+SHALE_VARIANTS = ["cfd_coarse_rhoRule", "cfd_coarse_rhoRuleLow", "cfd_coarse_rhoRuleHigh",
+                  "cfd_coarse_rhoRule_psi0.80", "cfd_coarse_rhoRule_psi0.65"]
+
+
+def shaleSensitivity(results):
+    """The shales' density (the rule's central value and range) and grain shape
+    (Haider-Levenspiel sphericity), each a fixed input scored on the shared rows:
+    all rows, by material, fall height and V_g band (RMS ln / bias)."""
+    cols = [ALL] + BY_MATERIAL + BANDS[1:]
+    entries = [(BREAKDOWN, "cfd_coarse")] + [(SHALE + "/scoresBreakdown.csv", m) for m in SHALE_VARIANTS]
+    return _table(results, entries, cols, "route (bulk advance, 69 rows)")
+
+
+def shaleFolds(results):
+    """The cross-validations with the shale variants among the headline's 1 atm
+    candidates, against the headline's own (held-out RMS ln / bias)."""
+    out = ["| candidates | leave one fall height out (`cv_height`) | leave one material out (`cv_material`) |",
+           "|---|---|---|"]
+    for name, file in (("the headline's eleven", BREAKDOWN),
+                       ("the eleven and the five shale variants", SHALE + "/scoresBreakdown.csv")):
+        out.append("| %s | %s | %s |" % (name, _cell(results, file, "cv_height", "all", "all"),
+                                         _cell(results, file, "cv_material", "all", "all")))
+    for r in results.rows(SHALE + "/crossValidation.csv"):
+        if r["protocol"] in ("fall_height", "material"):
+            out.append("| fold: %s %s held out | chose `%s` | held-out RMS ln %s |" % (
+                r["protocol"].replace("_", " "), r["held_out"].replace("_", " "), r["chosen"],
+                _f(df.finite(r["held_out_rms_ln"], SHALE + "/crossValidation.csv"))))
+    return "\n".join(out)

@@ -40,6 +40,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "profiling.H"
 #include "sigFpe.H"
 #include "singlePhaseTransportModel.H"
 #include "PhaseIncompressibleTurbulenceModel.H"
@@ -107,6 +108,7 @@ int main(int argc, char *argv[])
 
         if (LTS)
         {
+            addProfiling(rDeltaT, "curtainFoam::localTimeStep");
             #include "setRDeltaT.H"
         }
         else
@@ -119,25 +121,38 @@ int main(int argc, char *argv[])
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
+        // (sections timed when the case's controlDict has profiling { active
+        // yes; }: <time>/uniform/profiling, tests/benchmarks/curtainPeer PROFILE=1;
+        // triggers stopped by hand where the included code's variables live on)
         while (pimple.loop())
         {
+            profilingTrigger alphaProf("curtainFoam::solidsFractions");
             #include "alphaEqns.H"
+            alphaProf.stop();
+            profilingTrigger UEqnsProf("curtainFoam::momentumPredictor");
             #include "UEqns.H"
+            UEqnsProf.stop();
 
             while (pimple.correct())
             {
+                addProfiling(pEqn, "curtainFoam::pressure");
                 #include "pEqn.H"
             }
 
+            profilingTrigger UpProf("curtainFoam::solidsMomentum");
             #include "UpEqns.H"
+            UpProf.stop();
 
             if (pimple.turbCorr())
             {
+                addProfiling(turb, "curtainFoam::turbulence");
                 turbulence->correct();
             }
         }
 
+        profilingTrigger checkProf("curtainFoam::checkFields");
         #include "checkFields.H"
+        checkProf.stop();
 
         runTime.write();
         if (runTime.writeTime())
