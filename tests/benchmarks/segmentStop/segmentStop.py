@@ -1,12 +1,21 @@
-"""segmentStop: the two sweeps of tests/benchmarks/segmentStop/run compared, per
-segment (CPU, steps, whether the statistics knew their means) and per curtain
-(each mean of the statistical stop against the fixed run's band: the smallest and
-largest sample of its averaging window).
+"""segmentStop: what the statistical stop makes of the shipped segment table's runs.
 
-  python3 segmentStop.py WORK RESULTS
+  python3 segmentStop.py WORK RESULTS     (the fixed sweep of ./run in WORK/fixed)
+  python3 segmentStop.py -replay CASE     (one run: the replayed stop, for checking)
 
-Writes RESULTS/segmentStop.csv (per curtain and quantity), RESULTS/summary.csv
-(per segment and the totals) and RESULTS/segmentStop.png."""
+A statistical stop changes nothing before it: the run that stops at step N is the
+fixed run up to N. So each fixed run (900 steps, the means of the last 300: the
+shipped table) also gives the statistical one: the rule of the template's
+`statistics` (batchMeans, src/curtainModels/runTimeConditions/batchMeans) replayed
+on the same 10-step samples of V_c/V_g and the drift gives the step N, the window
+and its means; the CPU to N is curtainFoam's own ExecutionTime at N in the run's
+log. The replay is this benchmark's copy of the rule; `-replay` on a run made with
+-stop statistical shows it gives that run's step and window
+(tests/benchmarks/segmentStop/README.md).
+
+Per segment and curtain: each mean of the statistical window against the fixed
+run's band (the smallest and largest sample of its window). Writes
+RESULTS/segmentStop.csv, RESULTS/summary.csv, RESULTS/segmentStop.png."""
 import csv
 import io
 import math
@@ -15,78 +24,148 @@ import re
 import sys
 
 HERE = os.path.dirname(os.path.realpath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "src", "python"))
-from flightedDryer import files, foamOutput  # noqa: E402
+ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "src", "python"))
+from flightedDryer import files, foamDictionary, foamOutput  # noqa: E402
 
-QUANTITIES = (("vc_over_vg", "gasInCurtain", "VcByVg"), ("drift_m", "drift", "drift"))
+TEMPLATE = os.path.join(ROOT, "etc", "templates", "curtain", "drumSegment", "system", "controlDict")
 
 
-def cpu_and_steps(run):
-    """curtainFoam's CPU time (its last ExecutionTime) and its last step."""
-    cpu = None
+def rule():
+    """The statistics' settings of the template (batch, minBatches, tolerances, start)."""
+    def v(cond, key, default=None):
+        try:
+            return float(foamDictionary.value(TEMPLATE, "functions/statistics/conditions/%s/%s" % (cond, key)))
+        except foamDictionary.FoamDictionaryError:
+            if default is None:
+                raise
+            return default
+    return {c: {"batch": v(c, "batch"), "minBatches": int(v(c, "minBatches")), "tol": v(c, "tolerance"),
+                "abs": v(c, "absTolerance", 0.0), "start": v(c, "startTime", -1e300)} for c in ("vc", "drift")}
+
+
+def decide(times, values, t, r):
+    """batchMeans at time t on the samples up to t: (satisfied, window start, kept, mean, se)."""
+    nb = int(math.floor((t - r["start"] + 1e-9) / r["batch"]))
+    frm = t - nb * r["batch"]
+    if nb < 2:
+        return False, frm, 0, float("nan"), float("nan")
+    m = [0.0] * nb
+    n = [0] * nb
+    for tt, x in zip(times, values):
+        if frm + 1e-9 < tt <= t + 1e-9 and tt > r["start"] + 1e-9:
+            j = min(nb - 1, int(math.floor((tt - frm - 1e-9) / r["batch"])))
+            m[j] += x
+            n[j] += 1
+    if min(n) == 0:
+        return False, frm, 0, float("nan"), float("nan")
+    m = [a / k for a, k in zip(m, n)]
+    best, d = None, 0
+    for dd in range(0, nb // 2 + 1):
+        kept = m[dd:]
+        mean = sum(kept) / len(kept)
+        z = sum((x - mean) ** 2 for x in kept) / len(kept) ** 2
+        if best is None or z < best:
+            best, d = z, dd
+    return m, frm, d, nb
+
+
+def replay(case):
+    """(stop step or None, window start, kept batches, {field: (mean, se)}) of the
+    template's statistics replayed on a run's 10-step samples."""
+    r = rule()
+    g = foamOutput.fo_rows(case, "gasInCurtain")
+    dr = foamOutput.fo_rows(case, "drift")
+    series = {"vc": ([x["Time"] for x in g], [x["VcByVg"] for x in g]),
+              "drift": ([x["Time"] for x in dr], [x["drift_bulk"] for x in dr])}
+    for t in series["vc"][0]:
+        if int(round(t)) % 10:
+            continue
+        out, ok = {}, True
+        drops = []
+        for c in ("vc", "drift"):
+            res = decide(*series[c], t, r[c])
+            if res[0] is False:
+                ok = False
+                break
+            m, frm, d, nb = res
+            drops.append((m, frm, d, nb))
+        if not ok:
+            continue
+        # one window for all fields of a condition; each condition its own window
+        for c, (m, frm, d, nb) in zip(("vc", "drift"), drops):
+            kept = m[d:]
+            mean = sum(kept) / len(kept)
+            se = math.sqrt(sum((x - mean) ** 2 for x in kept) / (len(kept) * (len(kept) - 1))) \
+                if len(kept) > 1 else float("inf")
+            out[c] = (mean, se, frm + d * r[c]["batch"], len(kept))
+            ok = ok and len(kept) >= r[c]["minBatches"] and se <= max(r[c]["tol"] * abs(mean), r[c]["abs"])
+        if ok:
+            start = max(out["vc"][2], out["drift"][2])
+            return int(round(t)), start, min(out["vc"][3], out["drift"][3]), out
+    return None, None, None, None
+
+
+def cpu_at(run, step):
+    """curtainFoam's ExecutionTime at a step (and its last), from the run's log."""
+    at = last = None
+    cur = None
     with open(os.path.join(run, "log.curtainFoam"), errors="replace") as f:
         for line in f:
+            m = re.match(r"^Time = ([0-9.eE+-]+)$", line.strip())
+            if m:
+                cur = float(m.group(1))
+                continue
             m = re.match(r"^ExecutionTime = ([0-9.eE+-]+) s", line)
             if m:
-                cpu = float(m.group(1))
-    steps = max(int(d) for d in os.listdir(os.path.join(run, "case")) if d.isdigit())
-    if cpu is None or not math.isfinite(cpu):
-        raise SystemExit("segmentStop: %s/log.curtainFoam: no ExecutionTime" % run)
-    return cpu, steps
+                last = float(m.group(1))
+                if cur is not None and step is not None and abs(cur - step) < 1e-9:
+                    at = last
+    for v in (last,) + ((at,) if step is not None else ()):
+        if v is None or not math.isfinite(v):
+            raise SystemExit("segmentStop: %s/log.curtainFoam: no ExecutionTime at step %s" % (run, step))
+    return at, last
 
 
-def curtains(run):
-    with open(os.path.join(run, "curtains.csv"), newline="") as f:
-        return {r["curtain"]: r for r in csv.DictReader(f)}
-
-
-def window_extent(run, name, key, window):
-    """(least, largest) sample of a function object's result over the window."""
-    rows = foamOutput.fo_rows(os.path.join(run, "case"), name)
-    last = rows[-1]["Time"]
-    vals = [r[key] for r in rows if r["Time"] > last - window]
-    return min(vals), max(vals)
-
-
-def number(text, what):
-    v = float(text)
-    if not math.isfinite(v):
-        raise SystemExit("segmentStop: %s is %s" % (what, text))
-    return v
+def window_stats(case, name, key, start, end):
+    rows = [r for r in foamOutput.fo_rows(case, name) if start < r["Time"] <= end]
+    vals = [r[key] for r in rows]
+    if not vals or not all(math.isfinite(v) for v in vals):
+        raise SystemExit("segmentStop: %s %s: no finite samples in (%g, %g]" % (case, key, start, end))
+    return sum(vals) / len(vals), min(vals), max(vals)
 
 
 def main(work, out):
-    cases = sorted(d for d in os.listdir(os.path.join(work, "fixed"))
-                   if os.path.isfile(os.path.join(work, "fixed", d, "curtains.csv")))
+    base = os.path.join(work, "fixed")
+    cases = sorted(d for d in os.listdir(base) if os.path.isfile(os.path.join(base, d, "curtains.csv")))
     if not cases:
-        raise SystemExit("segmentStop: no finished segment in %s/fixed" % work)
+        raise SystemExit("segmentStop: no finished segment in %s" % base)
     rows, summary = [], []
     for c in cases:
-        fx, st = os.path.join(work, "fixed", c), os.path.join(work, "statistical", c)
-        fcpu, fsteps = cpu_and_steps(fx)
-        scpu, ssteps = cpu_and_steps(st)
-        with open(os.path.join(st, "log.curtainFoam"), errors="replace") as f:
-            log = f.read()
-        fc, sc = curtains(fx), curtains(st)
-        window = int(fc["section"]["window_steps"])
-        summary.append([c, fsteps, "%.1f" % fcpu, ssteps, "%.1f" % scpu, sc["section"]["window_steps"],
-                        "%.3f" % (scpu / fcpu)])
-        for name in fc:
-            for q, fo, prefix in QUANTITIES:
-                key = ("%s_%s" % (prefix, name)) if name != "section" else ("VcByVg" if q == "vc_over_vg"
-                                                                             else "drift_bulk")
-                lo, hi = window_extent(fx, fo, key, window)
-                fm = number(fc[name][q], "%s %s %s fixed" % (c, name, q))
-                sm = number(sc[name][q], "%s %s %s statistical" % (c, name, q))
+        run = os.path.join(base, c)
+        case = os.path.join(run, "case")
+        with open(os.path.join(run, "curtains.csv"), newline="") as f:
+            fixed = {r["curtain"]: r for r in csv.DictReader(f)}
+        last = max(int(d) for d in os.listdir(case) if d.isdigit())
+        window = int(fixed["section"]["window_steps"])
+        stop, start, kept, stats = replay(case)
+        end = stop if stop is not None else last
+        start = start if stop is not None else last - window
+        cpu_stop, cpu_last = cpu_at(run, end)
+        summary.append([c, last, "%.1f" % cpu_last, end, "%.1f" % cpu_stop, int(end - start),
+                        "yes" if stop is not None else "no", "%.3f" % (cpu_stop / cpu_last)])
+        for name in fixed:
+            for q, fo, key in (("vc_over_vg", "gasInCurtain", "VcByVg" if name == "section" else "VcByVg_" + name),
+                               ("drift_m", "drift", "drift_bulk" if name == "section" else "drift_" + name)):
+                fm, lo, hi = window_stats(case, fo, key, last - window, last)
+                sm, _, _ = window_stats(case, fo, key, start, end)
                 rows.append([c, name, q, "%.6g" % fm, "%.6g" % lo, "%.6g" % hi, "%.6g" % sm,
                              "%.4g" % ((sm - fm) / (hi - lo) if hi > lo else 0.0),
                              "yes" if lo <= sm <= hi else "no"])
-        if "mean known" not in log and "Conditions met" not in log:
-            print("segmentStop: %s: the statistics did not know their means before the cap" % c)
     ft = sum(float(s[2]) for s in summary)
     stt = sum(float(s[4]) for s in summary)
     summary.append(["total", sum(s[1] for s in summary), "%.1f" % ft, sum(s[3] for s in summary), "%.1f" % stt,
-                    "", "%.3f" % (stt / ft)])
+                    "", "%d of %d" % (sum(1 for s in summary if s[6] == "yes"), len(summary)), "%.3f" % (stt / ft)])
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["case", "curtain", "quantity", "fixed_mean", "fixed_window_min", "fixed_window_max",
@@ -96,10 +175,11 @@ def main(work, out):
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["case", "fixed_steps", "fixed_cpu_s", "statistical_steps", "statistical_cpu_s",
-                "statistical_window_steps", "cpu_ratio"])
+                "statistical_window_steps", "means_known", "cpu_ratio"])
     w.writerows(summary)
     files.atomic_write(os.path.join(out, "summary.csv"), buf.getvalue())
     inside = sum(1 for r in rows if r[-1] == "yes")
+    print(buf.getvalue())
     print("segmentStop: CPU %.0f s (fixed) against %.0f s (statistical), ratio %.3f; %d of %d means inside "
           "the fixed run's band" % (ft, stt, stt / ft, inside, len(rows)))
 
@@ -107,10 +187,10 @@ def main(work, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axs = plt.subplots(1, 3, figsize=(16, 4.8))
-    x = range(len(cases))
-    axs[0].bar([i - 0.2 for i in x], [float(s[2]) for s in summary[:-1]], 0.4, label="fixed 900 steps")
+    x = list(range(len(cases)))
+    axs[0].bar([i - 0.2 for i in x], [float(s[2]) for s in summary[:-1]], 0.4, label="fixed: 900 steps")
     axs[0].bar([i + 0.2 for i in x], [float(s[4]) for s in summary[:-1]], 0.4, label="statistical stop")
-    axs[0].set_xticks(list(x))
+    axs[0].set_xticks(x)
     axs[0].set_xticklabels(cases, rotation=30, fontsize=8)
     axs[0].set_ylabel("curtainFoam CPU [s]")
     axs[0].legend(fontsize=8)
@@ -118,7 +198,7 @@ def main(work, out):
         sel = [r for r in rows if r[1] == "section" and r[2] == q]
         for i, r in enumerate(sel):
             ax.plot([i, i], [float(r[4]), float(r[5])], color="0.6", lw=6, solid_capstyle="butt",
-                    label="fixed: window's band" if i == 0 else None)
+                    label="fixed: its window's band" if i == 0 else None)
             ax.plot(i, float(r[3]), "o", color="tab:blue", label="fixed: mean" if i == 0 else None)
             ax.plot(i, float(r[6]), "x", color="tab:red", ms=9, label="statistical: mean" if i == 0 else None)
         ax.set_xticks(range(len(sel)))
@@ -127,12 +207,16 @@ def main(work, out):
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
     fig.suptitle("Invicta drum segments: the statistical stop against 900 fixed steps "
-                 "(CPU ratio %.2f, %d of %d means inside the band)" % (stt / ft, inside, len(rows)))
+                 "(CPU ratio %.2f; %d of %d means inside the band)" % (stt / ft, inside, len(rows)))
     fig.tight_layout()
     files.save_figure(fig, os.path.join(out, "segmentStop.png"), 100)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) == 3 and sys.argv[1] == "-replay":
+        stop, start, kept, stats = replay(sys.argv[2])
+        print("stop %s, window from %s, %s batches, %s" % (stop, start, kept, stats))
+    elif len(sys.argv) == 3:
+        main(sys.argv[1], sys.argv[2])
+    else:
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
