@@ -152,8 +152,7 @@ def main(work, out):
         end = stop if stop is not None else last
         start = start if stop is not None else last - window
         cpu_stop, cpu_last = cpu_at(run, end)
-        summary.append([c, last, "%.1f" % cpu_last, end, "%.1f" % cpu_stop, int(end - start),
-                        "yes" if stop is not None else "no", "%.3f" % (cpu_stop / cpu_last)])
+        n0 = len(rows)
         for name in fixed:
             for q, fo, key in (("vc_over_vg", "gasInCurtain", "VcByVg" if name == "section" else "VcByVg_" + name),
                                ("drift_m", "drift", "drift_bulk" if name == "section" else "drift_" + name)):
@@ -162,10 +161,15 @@ def main(work, out):
                 rows.append([c, name, q, "%.6g" % fm, "%.6g" % lo, "%.6g" % hi, "%.6g" % sm,
                              "%.4g" % ((sm - fm) / (hi - lo) if hi > lo else 0.0),
                              "yes" if lo <= sm <= hi else "no"])
+        mine = rows[n0:]
+        summary.append([c, last, "%.1f" % cpu_last, end, "%.1f" % cpu_stop, int(end - start),
+                        "yes" if stop is not None else "no", "%.3f" % (cpu_stop / cpu_last),
+                        sum(1 for r in mine if r[-1] == "yes"), len(mine)])
     ft = sum(float(s[2]) for s in summary)
     stt = sum(float(s[4]) for s in summary)
     summary.append(["total", sum(s[1] for s in summary), "%.1f" % ft, sum(s[3] for s in summary), "%.1f" % stt,
-                    "", "%d of %d" % (sum(1 for s in summary if s[6] == "yes"), len(summary)), "%.3f" % (stt / ft)])
+                    "", sum(1 for s in summary if s[6] == "yes"), "%.3f" % (stt / ft),
+                    sum(s[8] for s in summary), sum(s[9] for s in summary)])
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["case", "curtain", "quantity", "fixed_mean", "fixed_window_min", "fixed_window_max",
@@ -175,7 +179,7 @@ def main(work, out):
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["case", "fixed_steps", "fixed_cpu_s", "statistical_steps", "statistical_cpu_s",
-                "statistical_window_steps", "means_known", "cpu_ratio"])
+                "statistical_window_steps", "means_known", "cpu_ratio", "means_inside_band", "means"])
     w.writerows(summary)
     files.atomic_write(os.path.join(out, "summary.csv"), buf.getvalue())
     inside = sum(1 for r in rows if r[-1] == "yes")
