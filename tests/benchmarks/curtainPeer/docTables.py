@@ -26,3 +26,32 @@ def peer(results):
     if len(rows) < 2:
         raise df.FigureError("%s: fewer than two rows" % PEER)
     return "\n".join(out)
+
+
+PROFILE = "tests/benchmarks/curtainPeer/results/curtainFoamProfile_medium.csv"
+# the solver's own sections (curtainFoam.C) and, inside them, the solves worth naming
+SECTIONS = ("curtainFoam::pressure", "curtainFoam::turbulence", "curtainFoam::momentumPredictor",
+            "curtainFoam::solidsFractions", "curtainFoam::solidsMomentum", "curtainFoam::localTimeStep",
+            "curtainFoam::checkFields")
+INSIDE = ("lduMatrix::solver.p_rgh", "lduMatrix::solver.k.air", "lduMatrix::solver.epsilon.air",
+          "lduMatrix::solver.alpha.particles")
+
+
+def profile(results):
+    """Where a medium curtainFoam run's CPU goes: OpenFOAM's profiling of each
+    section of the solver's loop (share of the run; its own share besides the
+    solves inside it) and the linear solves that weigh most."""
+    rows = {r["section"]: r for r in results.rows(PROFILE)}
+    v = lambda name, c: df.finite(rows[name][c], PROFILE)
+    total = v("application::main", "total_s")
+    iters = int(v("application::main", "iterations"))
+    out = ["| section (%d iterations, %s s with profiling) | share of the run | its own (assembly, outside the solves) | per iteration [ms] |"
+           % (iters, df.fmt(total, "%.0f")), "|---|---|---|---|"]
+    for name in SECTIONS + INSIDE:
+        if name not in rows:
+            raise df.FigureError("%s: no section %s" % (PROFILE, name))
+        out.append("| `%s`%s | %s %% | %s %% | %s |" % (
+            name, " (in %s)" % rows[name]["parent"].replace("fvMatrix::solve.", "")
+            if name in INSIDE else "", df.fmt(100 * v(name, "share_total"), "%.1f"),
+            df.fmt(100 * v(name, "share_self"), "%.1f"), df.fmt(1000 * v(name, "total_s") / iters, "%.1f")))
+    return "\n".join(out)
