@@ -5,7 +5,6 @@
 #include "batchMeans.H"
 #include "addToRunTimeSelectionTable.H"
 #include "Time.H"
-#include "exactText.H"
 
 #include <cmath>
 
@@ -22,80 +21,6 @@ namespace runTimeControls
 }
 
 
-// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-void Foam::functionObjects::runTimeControls::batchMeans::storeState()
-{
-    dictionary& d = conditionDict();
-    List<string> t(times_.size());
-    forAll(times_, i)
-    {
-        t[i] = exactText::write(times_[i]);
-    }
-    d.set("times", t);
-    forAll(fieldNames_, fieldi)
-    {
-        List<string> v(values_[fieldi].size());
-        forAll(v, i)
-        {
-            v[i] = exactText::write(values_[fieldi][i]);
-        }
-        d.set(fieldNames_[fieldi], v);
-    }
-}
-
-
-void Foam::functionObjects::runTimeControls::batchMeans::restoreState()
-{
-    const dictionary& d = conditionDict();
-    if (!d.found("times"))
-    {
-        return;
-    }
-    const word owner("batchMeans " + name_);
-    times_.clear();
-    for (const string& s : d.get<List<string>>("times"))
-    {
-        times_.append(exactText::read(s, owner));
-    }
-    forAll(fieldNames_, fieldi)
-    {
-        values_[fieldi].clear();
-        if (!d.found(fieldNames_[fieldi]))
-        {
-            // the field list changed since the state was written: start over
-            times_.clear();
-            for (auto& v : values_)
-            {
-                v.clear();
-            }
-            return;
-        }
-        for (const string& s : d.get<List<string>>(fieldNames_[fieldi]))
-        {
-            values_[fieldi].append(exactText::read(s, owner));
-        }
-        if (values_[fieldi].size() != times_.size())
-        {
-            FatalErrorInFunction
-                << owner << ": the stored state has " << values_[fieldi].size()
-                << " values of " << fieldNames_[fieldi] << " for "
-                << times_.size() << " sample times" << exit(FatalError);
-        }
-    }
-}
-
-
-bool Foam::functionObjects::runTimeControls::batchMeans::result
-(
-    const word& entry,
-    scalar& value
-) const
-{
-    return state_.getObjectResult<scalar>(functionObjectName_, entry, value);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::runTimeControls::batchMeans::batchMeans
@@ -106,38 +31,14 @@ Foam::functionObjects::runTimeControls::batchMeans::batchMeans
     stateFunctionObject& state
 )
 :
-    runTimeCondition(name, obr, dict, state),
-    functionObjectName_(dict.get<word>("functionObject")),
-    fieldNames_(dict.get<wordList>("fields")),
+    sampledCondition(typeName, name, obr, dict, state),
     batch_(dict.get<scalar>("batch")),
     minBatches_(dict.get<label>("minBatches")),
     tolerance_(dict.get<scalar>("tolerance")),
     absTolerance_(dict.getOrDefault<scalar>("absTolerance", 0)),
-    startTime_(dict.getOrDefault<scalar>("startTime", -GREAT)),
-    times_(),
-    values_(fieldNames_.size())
+    startTime_(dict.getOrDefault<scalar>("startTime", -GREAT))
 {
-    // A misspelt entry would silently be ignored: refuse it
-    const wordList allowed
-    ({
-        "type", "functionObject", "fields", "batch", "minBatches", "tolerance",
-        "absTolerance", "startTime", "groupID", "active", "log"
-    });
-    for (const word& key : dict.toc())
-    {
-        if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "batchMeans " << name << ": unknown entry '" << key
-                << "'; allowed entries: " << allowed << exit(FatalIOError);
-        }
-    }
-    if (fieldNames_.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "batchMeans " << name << ": entry 'fields' is empty"
-            << exit(FatalIOError);
-    }
+    refuseUnknown(dict, {"batch", "minBatches", "tolerance", "absTolerance", "startTime"});
     if (!(batch_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -159,7 +60,7 @@ Foam::functionObjects::runTimeControls::batchMeans::batchMeans
             << " must be in [0, inf)" << exit(FatalIOError);
     }
 
-    restoreState();
+    restoreSamples();
 }
 
 
@@ -177,37 +78,19 @@ bool Foam::functionObjects::runTimeControls::batchMeans::apply()
 
     // a sample of this time already taken (runTimeControl may be executed
     // twice at the final time)
-    if (times_.size() && mag(times_.last() - t) <= eps)
-    {
-        times_.remove();
-        for (auto& v : values_)
-        {
-            v.remove();
-        }
-    }
+    forgetRepeat(t, eps);
     if (t <= startTime_ + eps)
     {
         return false;
     }
 
-    List<scalar> now(fieldNames_.size(), Zero);
-    forAll(fieldNames_, fieldi)
+    List<scalar> now;
+    if (!sampleNow(now))
     {
-        if (!result(fieldNames_[fieldi], now[fieldi]))
-        {
-            WarningInFunction
-                << "batchMeans " << name_ << ": function object "
-                << functionObjectName_ << " has published no result '"
-                << fieldNames_[fieldi] << "' (yet)" << endl;
-            return false;
-        }
+        return false;
     }
-    times_.append(t);
-    forAll(fieldNames_, fieldi)
-    {
-        values_[fieldi].append(now[fieldi]);
-    }
-    storeState();
+    append(t, now);
+    storeSamples();
 
     // the last nb whole batches, counted back from t: samples in (t - nb b, t]
     const label nb = label(std::floor((t - startTime_ + eps)/batch_));
@@ -335,7 +218,7 @@ bool Foam::functionObjects::runTimeControls::batchMeans::apply()
 
 void Foam::functionObjects::runTimeControls::batchMeans::write()
 {
-    storeState();
+    storeSamples();
 }
 
 

@@ -27,23 +27,8 @@ namespace runTimeControls
 
 void Foam::functionObjects::runTimeControls::steadyWindow::storeState()
 {
-    dictionary& d = conditionDict();
-    d.set("firstTime", exactText::write(firstTime_));
-    List<string> t(times_.size());
-    forAll(times_, i)
-    {
-        t[i] = exactText::write(times_[i]);
-    }
-    d.set("times", t);
-    forAll(fieldNames_, fieldi)
-    {
-        List<string> v(values_[fieldi].size());
-        forAll(v, i)
-        {
-            v[i] = exactText::write(values_[fieldi][i]);
-        }
-        d.set(fieldNames_[fieldi], v);
-    }
+    conditionDict().set("firstTime", exactText::write(firstTime_));
+    storeSamples();
 }
 
 
@@ -55,49 +40,11 @@ void Foam::functionObjects::runTimeControls::steadyWindow::restoreState()
         return;
     }
     firstTime_ = exactText::read(d.get<string>("firstTime"), "steadyWindow " + name_);
-    const List<string> t(d.get<List<string>>("times"));
-    times_.clear();
-    for (const string& s : t)
+    if (!restoreSamples())
     {
-        times_.append(exactText::read(s, "steadyWindow " + name_));
+        // the field list changed since the state was written: start over
+        firstTime_ = -1;
     }
-    forAll(fieldNames_, fieldi)
-    {
-        values_[fieldi].clear();
-        if (!d.found(fieldNames_[fieldi]))
-        {
-            // the field list changed since the state was written: start over
-            times_.clear();
-            firstTime_ = -1;
-            for (auto& v : values_)
-            {
-                v.clear();
-            }
-            return;
-        }
-        for (const string& s : d.get<List<string>>(fieldNames_[fieldi]))
-        {
-            values_[fieldi].append(exactText::read(s, "steadyWindow " + name_));
-        }
-        if (values_[fieldi].size() != times_.size())
-        {
-            FatalErrorInFunction
-                << "steadyWindow " << name_ << ": the stored state has "
-                << values_[fieldi].size() << " values of "
-                << fieldNames_[fieldi] << " for " << times_.size()
-                << " sample times" << exit(FatalError);
-        }
-    }
-}
-
-
-bool Foam::functionObjects::runTimeControls::steadyWindow::result
-(
-    const word& entry,
-    scalar& value
-) const
-{
-    return state_.getObjectResult<scalar>(functionObjectName_, entry, value);
 }
 
 
@@ -111,9 +58,7 @@ Foam::functionObjects::runTimeControls::steadyWindow::steadyWindow
     stateFunctionObject& state
 )
 :
-    runTimeCondition(name, obr, dict, state),
-    functionObjectName_(dict.get<word>("functionObject")),
-    fieldNames_(dict.get<wordList>("fields")),
+    sampledCondition(typeName, name, obr, dict, state),
     gates_(),
     gateMin_(dict.getOrDefault<scalar>("gateMin", 0)),
     window_(dict.get<scalar>("window")),
@@ -121,32 +66,13 @@ Foam::functionObjects::runTimeControls::steadyWindow::steadyWindow
     absTolerance_(dict.getOrDefault<scalar>("absTolerance", 0)),
     startTime_(dict.getOrDefault<scalar>("startTime", -GREAT)),
     requireChecked_(dict.getOrDefault<bool>("requireChecked", false)),
-    firstTime_(-1),
-    times_(),
-    values_(fieldNames_.size())
+    firstTime_(-1)
 {
-    // A misspelt entry would silently be ignored: refuse it
-    const wordList allowed
-    ({
-        "type", "functionObject", "fields", "gates", "gateMin", "window",
-        "tolerance", "absTolerance", "startTime", "requireChecked", "groupID",
-        "active", "log"
-    });
-    for (const word& key : dict.toc())
-    {
-        if (!allowed.found(key))
-        {
-            FatalIOErrorInFunction(dict)
-                << "steadyWindow " << name << ": unknown entry '" << key
-                << "'; allowed entries: " << allowed << exit(FatalIOError);
-        }
-    }
-    if (fieldNames_.empty())
-    {
-        FatalIOErrorInFunction(dict)
-            << "steadyWindow " << name << ": entry 'fields' is empty"
-            << exit(FatalIOError);
-    }
+    refuseUnknown
+    (
+        dict,
+        {"gates", "gateMin", "window", "tolerance", "absTolerance", "startTime", "requireChecked"}
+    );
     if (!(window_ > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -194,37 +120,19 @@ bool Foam::functionObjects::runTimeControls::steadyWindow::apply()
 
     // a sample of this time already taken (a restart re-applies nothing,
     // but runTimeControl may be executed twice at the final time)
-    if (times_.size() && mag(times_.last() - t) <= eps)
-    {
-        times_.remove();
-        for (auto& v : values_)
-        {
-            v.remove();
-        }
-    }
+    forgetRepeat(t, eps);
 
-    List<scalar> now(fieldNames_.size(), Zero);
-    forAll(fieldNames_, fieldi)
+    List<scalar> now;
+    if (!sampleNow(now))
     {
-        if (!result(fieldNames_[fieldi], now[fieldi]))
-        {
-            WarningInFunction
-                << "steadyWindow " << name_ << ": function object "
-                << functionObjectName_ << " has published no result '"
-                << fieldNames_[fieldi] << "' (yet)" << endl;
-            return false;
-        }
+        return false;
     }
 
     if (firstTime_ < 0)
     {
         firstTime_ = t;
     }
-    times_.append(t);
-    forAll(fieldNames_, fieldi)
-    {
-        values_[fieldi].append(now[fieldi]);
-    }
+    append(t, now);
 
     // keep the samples of the window [t - window, t]
     label drop = 0;
