@@ -73,11 +73,15 @@ def _curtain(g, out):
     return "One curtain of the table: V_g %g m/s, spill %g kg/(m s), fall %g m (curtain/, plotCurtain)." % (V, S, Y)
 
 
+def _write_plan(info, out):
+    atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+
+
 def _record_plan(info, g, study, out):
     """The plan's runs, CPU estimate and grid into info, and plan.json."""
     info.update(runs=plan.runs(g), estimate_s=plan.cpu_estimate_s(g, study),
                 grid={k: g[k] for k in ("gasVelocity", "spillRate", "fallHeight", "floors", "diameter")})
-    atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+    _write_plan(info, out)
 
 
 def run(opts, children):
@@ -112,7 +116,7 @@ def run(opts, children):
     elif sc["route"] != "table":
         # the scene needs no curtain run: the study's own route is the lone particles'
         table, wall = None, None
-        atomic_write(os.path.join(out, "plan.json"), json.dumps(info, indent=1) + "\n")
+        _write_plan(info, out)
         say("plan: no curtain runs (scene %s); the drift is the lone particles'" % sc["scene"])
         if opts.get("-plan"):
             say("-plan: nothing to sweep; the plan is in %s" % os.path.join(out, "plan.json"))
