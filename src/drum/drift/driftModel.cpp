@@ -99,6 +99,16 @@ void DriftQueryRange::add(const DriftQuery& q)
         hi[a] = count ? std::max(hi[a], x[a]) : x[a];
     }
     ++count;
+    if (std::isfinite(q.releaseAngleDeg) && std::isfinite(q.reposeAngleDeg))
+    {
+        const std::array<double, 2> y{q.releaseAngleDeg, q.reposeAngleDeg};
+        for (std::size_t a = 0; a < y.size(); ++a)
+        {
+            angleLo[a] = angleCount ? std::min(angleLo[a], y[a]) : y[a];
+            angleHi[a] = angleCount ? std::max(angleHi[a], y[a]) : y[a];
+        }
+        ++angleCount;
+    }
 }
 
 
@@ -127,6 +137,14 @@ std::string RecordingDrift::rangeCsv() const
     for (int a = 0; a < 6; ++a)
     {
         os << driftAxisName(a) << ',' << r.lo[a] << ',' << r.hi[a] << ',' << r.count << '\n';
+    }
+    if (r.angleCount)
+    {
+        const char* names[2] = {"release_angle_deg", "repose_angle_deg"};
+        for (int a = 0; a < 2; ++a)
+        {
+            os << names[a] << ',' << r.angleLo[a] << ',' << r.angleHi[a] << ',' << r.angleCount << '\n';
+        }
     }
     return os.str();
 }

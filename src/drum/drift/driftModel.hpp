@@ -63,6 +63,10 @@ struct DriftQueryRange
 {
     std::array<double, 6> lo{}, hi{};
     long count = 0;
+    //- The Lee angles (release, repose; deg) of the queries that carry them
+    //  (finite): the drum-segment table's axes
+    std::array<double, 2> angleLo{}, angleHi{};
+    long angleCount = 0;
     void add(const DriftQuery& q);
 };
 
@@ -77,7 +81,9 @@ public:
     std::string summary() const override { return inner_->summary(); }
     //- The range so far
     DriftQueryRange range() const;
-    //- range() as CSV: axis,min,max (the drift table's column names), then the query count
+    //- range() as CSV: axis,min,max (the drift table's column names), then the
+    //  query count; then release_angle_deg and repose_angle_deg (the segment
+    //  table's names) when queries carried them
     std::string rangeCsv() const;
 
 private:

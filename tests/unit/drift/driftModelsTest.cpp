@@ -379,6 +379,22 @@ TEST(DriftDictionary, ScaleAndRecordedQueries)
     EXPECT_DOUBLE_EQ(range.hi[spillRateAxis], 31);
     EXPECT_DOUBLE_EQ(range.lo[diameterAxis], 850e-6);
     EXPECT_NE(r->rangeCsv().find("fall_height_m,0.7,3,2\n"), std::string::npos) << r->rangeCsv();
+    // queries without Lee's angles (NaN) leave the angle rows out
+    EXPECT_EQ(range.angleCount, 0);
+    EXPECT_EQ(r->rangeCsv().find("angle"), std::string::npos) << r->rangeCsv();
+    // the flight model's queries carry them: their extent is recorded, the
+    // others' still counted on the table's axes
+    DriftQuery q3 = q, q4 = q;
+    q3.releaseAngleDeg = 95;
+    q3.reposeAngleDeg = 58;
+    q4.releaseAngleDeg = 180;
+    q4.reposeAngleDeg = 37;
+    rec->displacement(q3);
+    rec->displacement(q4);
+    EXPECT_EQ(r->range().count, 4);
+    EXPECT_EQ(r->range().angleCount, 2);
+    EXPECT_NE(r->rangeCsv().find("release_angle_deg,95,180,2\nrepose_angle_deg,37,58,2\n"), std::string::npos)
+        << r->rangeCsv();
 
     // bad entries name the entry and the range
     for (const std::string bad : {"0", "-1", "11", "big"})

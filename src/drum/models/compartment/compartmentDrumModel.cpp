@@ -10,6 +10,7 @@
 #include "drum/transport/compartment/compartmentDispersion.hpp"
 #include "drum/transport/compartment/compartmentFlightModel.hpp"
 #include "drum/transport/compartment/compartmentLeeEstimation.hpp"
+#include "drum/transport/kilnBed.hpp"
 
 #include <cmath>
 #include <iomanip>
@@ -500,18 +501,26 @@ void CompartmentDrumModel::runWith
 
     CsvTable prof({"slice", "x_m", "phi_deg", "design_load_kg", "passive_kg", "active_kg", "kiln_kg",
         "holdup_kg_per_m", "release_kg_s", "kiln_flow_kg_s", "forward_kg_s", "back_kg_s", "return_kg_s",
-        "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B", "dispersion_fill", "dense_dispersion_m2_s"});
+        "passive_time_s", "fall_time_s", "fall_height_m", "C_F", "C_B", "dispersion_fill", "dense_dispersion_m2_s",
+        "kiln_depth_m"});
     const double dL = c_.drum.length/s_.slices;
     for (int i = 0; i < s_.slices; ++i)
     {
         const auto& s = data[i];
+        // the kilning bed's surface over the drum bottom: a segment of the circle
+        // it rolls in (the flight-tip circle when the flights leave the bed full,
+        // their pockets below it), of the slice's kiln mass at the bulk density
+        const double Dk = s.kilnBedDiameter > 0 ? s.kilnBedDiameter : c_.drum.diameter;
+        const double kilnDepth = 0.5*(c_.drum.diameter - Dk)
+            + (st.kilnMass(i) > 0 ? bedDepth(Dk, fillAngle(Dk, st.kilnMass(i)/(dryer.bulkDensity*dL))) : 0.0);
         prof.addRow({double(i + 1), (i + 0.5)*dL, s.phiDeg, s.slice.designLoad, st.passiveMass(i),
             st.activeMass(i), st.kilnMass(i), (st.passiveMass(i) + st.activeMass(i))/dL,
             st.releaseFlow(i), st.kilnFlow(i), st.forwardFlow(i), st.backFlow(i), st.returnFlow(i),
             s.slice.passiveTime, s.slice.activeTime, s.correlations.fallHeight,
             s.slice.forwardFraction, s.slice.backFraction,
             dispersionFill.empty() ? nan : dispersionFill[i],
-            disp.coefficient.empty() ? 0.0 : disp.coefficient.size() == 1 ? disp.coefficient[0] : disp.coefficient[i]});
+            disp.coefficient.empty() ? 0.0 : disp.coefficient.size() == 1 ? disp.coefficient[0] : disp.coefficient[i],
+            kilnDepth});
     }
     prof.write(out/"profile.csv");
     if (s_.partition == "flightModel")

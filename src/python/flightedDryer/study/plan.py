@@ -49,8 +49,9 @@ def queries(desc, case, say, drift="sherritt", section=None, what="Eq 142 pass",
 
 
 def union(a, b):
-    """The extent of two sets of queries."""
-    return {k: (min(a[k][0], b[k][0]), max(a[k][1], b[k][1])) for k in a}
+    """The extent of two sets of queries (an axis only one of them has, as it has it)."""
+    return {k: (min(a[k][0], b[k][0]), max(a[k][1], b[k][1])) if k in a and k in b else a.get(k, b.get(k))
+            for k in list(a) + [k for k in b if k not in a]}
 
 
 def template(desc):
