@@ -134,8 +134,8 @@ Vector2d backNormal(const Vector2d& d, const Vector2d& back)
 //  The back face has a point w from the plate's end: the lip segment between
 //  them is where the flight's curtain is released (its normal points away
 //  from the material, down past the lip on the rising side and at the top)
-int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip, const Vector2d& back,
-                double t, double beyond, double w)
+std::vector<Vector2d> plateCorners(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip,
+                                   const Vector2d& back, double t, double beyond, double w)
 {
     const Vector2d d1 = (elbow - root).normalized(), d2 = (tip - elbow).normalized();
     const Vector2d n1 = backNormal(d1, back), n2 = backNormal(d2, back);
@@ -145,8 +145,14 @@ int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip
     const Vector2d ab = m.colPivHouseholderQr().solve(tip + t*n2 - root - t*n1);
     const Vector2d bend = root + t*n1 + ab(0)*d1;
     const Vector2d a = root - beyond*d1;
+    return {a, elbow, tip, Vector2d(tip + t*n2), Vector2d(tip + t*n2 - w*d2), bend, Vector2d(a + t*n1)};
+}
+
+int flightPlate(const Vector2d& root, const Vector2d& elbow, const Vector2d& tip, const Vector2d& back,
+                double t, double beyond, double w)
+{
     std::vector<int> pts;
-    for (const Vector2d& x : {a, elbow, tip, Vector2d(tip + t*n2), Vector2d(tip + t*n2 - w*d2), bend, Vector2d(a + t*n1)})
+    for (const Vector2d& x : plateCorners(root, elbow, tip, back, t, beyond, w))
     {
         pts.push_back(gmsh::model::occ::addPoint(x.x(), x.y(), 0));
     }
@@ -171,12 +177,53 @@ int main(int argc, char* argv[])
     try
     {
         const Options o = parse(argc, argv);
-        const drum::FlightCase c = drum::readFlightDictionary(o.dict);
+        drum::FlightCase c = drum::readFlightDictionary(o.dict);
         const drum::LeeFlight flight(c.geometry, c.phiDeg, o.dict.string());
-        const drum::UnloadingModel model(flight, c.settings, o.dict.string());
         const double R = c.geometry.drumRadius;
         const int nf = c.geometry.nFlights;
         const double t = o.plate;
+        if (c.settings.bedDepth > 0)
+        {
+            // a bed surface passing a flight plate's corner closer than a quarter of
+            // the plate's thickness leaves sliver cells there: the level is moved
+            // (by steps of a tenth of the thickness, at most two thicknesses) until
+            // it is clear of every corner, for the unloading and the mesh alike
+            std::vector<double> ys;
+            for (int j = 0; j < nf; ++j)
+            {
+                const double psi = std::fmod(c.snapshotAngleDeg + j*360.0/nf, 360.0);
+                const Vector2d back = -Vector2d(std::cos(psi*drum::deg), std::sin(psi*drum::deg));
+                for (const Vector2d& x : plateCorners(flight.rootPosition(psi), flight.elbowPosition(psi),
+                                                      flight.tipPosition(psi), back, t, 2*t, o.release))
+                {
+                    ys.push_back(x.y());
+                }
+            }
+            const auto clear = [&](double depth)
+            {
+                for (double y : ys) if (std::abs(-R + depth - y) < 0.25*t) return false;
+                return true;
+            };
+            const double given = c.settings.bedDepth;
+            double depth = given;
+            for (int k = 1; !clear(depth); ++k)
+            {
+                if (k > 40)
+                {
+                    std::ostringstream os;
+                    os << given << " m: no level within " << 2*t << " m of it is clear of the flights' corners";
+                    throw drum::InputError(o.dict.string(), "drum.bedDepth", os.str());
+                }
+                depth = given + (k % 2 ? 1 : -1)*((k + 1)/2)*0.1*t;
+            }
+            if (depth != given)
+            {
+                std::cout << "drumSegmentMesh: bed level moved from " << given << " m to " << depth
+                          << " m: clear of the flights' corners by a quarter plate thickness\n";
+                c.settings.bedDepth = depth;
+            }
+        }
+        const drum::UnloadingModel model(flight, c.settings, o.dict.string());
         if (t > 0.5*std::min(c.geometry.baseLength, c.geometry.tipLength))
         {
             throw drum::InputError("", "-plateThickness", "thicker than half the shorter flight section");

@@ -13,14 +13,13 @@ SEGMENT_OPTIONS = {"-dir": "-out", "-flights": "-dict", "-gasVelocity": "-gasVel
                    "-reposeAngle": "-reposeAngle", "-level": "-level", "-np": "-np",
                    "-iterations": "-steps", "-ends": "-ends", "-segmentLength": "-length",
                    "-template": "-template", "-release": "-release", "-drag": "-drag",
-                   "-stop": "-stop"}
+                   "-stop": "-stop", "-density": "-density", "-gasTemperature": "-gasTemperature",
+                   "-gasPressure": "-gasPressure", "-diameters": "-diameter"}
 BOX_ONLY = {"-spillRate": "every flight's spill rate comes from the flight model (mesh/flights.csv)",
             "-fallHeight": "every flight's fall height comes from the flight model (mesh/flights.csv)",
             "-heights": "each curtain falls to the bed, measured where it lands",
             "-flightLength": "the flights span the segment (-segmentLength)",
-            "-density": "the material is the flight dictionary's (and the template's caseParameters)",
-            "-diameters": "one crystal size, the template's caseParameters diameter",
-            "-fractions": "one crystal size, the template's caseParameters diameter"}
+            "-fractions": "one particle size (-diameters, a single value) for every curtain"}
 
 
 def scene_of(argv):
@@ -54,6 +53,9 @@ def drum_segment(argv):
         elif a in SEGMENT_OPTIONS:
             if i + 1 >= len(argv):
                 raise InputError("option %s needs a value" % a)
+            if a == "-diameters" and len(argv[i + 1].split(",")) != 1:
+                raise InputError("-diameters '%s': -scene drumSegment takes one diameter (every curtain's)"
+                                 % argv[i + 1])
             out += [SEGMENT_OPTIONS[a], argv[i + 1]]
             i += 2
         elif a in BOX_ONLY:

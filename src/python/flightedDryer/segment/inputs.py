@@ -6,13 +6,13 @@ import hashlib
 import os
 import re
 
-from .. import PROJECT, facts
+from .. import PROJECT, facts, gas
 from ..errors import InputError
 
 TOOL = "drumSegmentCase"
 FLAGS = {"-meshOnly", "-check"}
 VALUED = {"-dict", "-out", "-level", "-ends", "-gasVelocity", "-reposeAngle", "-length", "-np", "-steps",
-          "-template", "-release", "-drag", "-stop"}
+          "-template", "-release", "-drag", "-stop", "-density", "-diameter", "-gasTemperature", "-gasPressure"}
 NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
 
 
@@ -23,7 +23,8 @@ def parse(argv, usage):
     o = {"dict": "", "out": "", "level": "coarse", "ends": "periodic", "gasVelocity": "", "reposeAngle": "",
          "length": "1.133", "np": "1", "steps": "", "template": os.path.join(PROJECT, "etc", "templates",
                                                                             "curtain", "drumSegment"),
-         "release": "", "drag": "SchillerNaumann", "stop": "", "meshOnly": False, "check": False}
+         "release": "", "drag": "SchillerNaumann", "stop": "", "density": "", "diameter": "", "gasTemperature": "",
+         "gasPressure": "", "meshOnly": False, "check": False}
     i = 0
     while i < len(argv):
         a = argv[i]
@@ -84,6 +85,25 @@ def check(o):
         raise InputError("-stop statistical needs -ends periodic (open ends have a steady state: fixed)")
     # periodic ends stop when their means are known; open ends run their steps
     o["stop"] = o["stop"] or ("statistical" if o["ends"] == "periodic" else "fixed")
+    # the material and the gas (default: the template's caseParameters and
+    # transportProperties, the Invicta crystal in air at 80 degC)
+    if o["gasTemperature"]:
+        in_range("-gasTemperature", o["gasTemperature"], -50, 1500)
+    if o["gasPressure"]:
+        in_range("-gasPressure", o["gasPressure"], 10, 1000)
+    o["gas"] = None
+    if o["gasTemperature"] or o["gasPressure"]:
+        try:
+            o["gas"] = gas.air_properties(float(o["gasTemperature"] or 20), float(o["gasPressure"])
+                                          if o["gasPressure"] else None, entry="-gasTemperature",
+                                          warn=lambda w: print("%s: warning: %s" % (TOOL, w), flush=True))
+        except gas.GasError as e:
+            raise InputError("-gasTemperature/-gasPressure: %s" % e)
+    if o["diameter"]:
+        in_range("-diameter", o["diameter"], 1e-6, 0.05)
+    if o["density"]:
+        rho_gas = float(o["gas"][0]) if o["gas"] else 1.0
+        in_range("-density", o["density"], 10 * rho_gas, 25000)
     laws = facts.drag_laws()
     if o["drag"] not in laws:
         raise InputError("-drag '%s' is not one of %s" % (o["drag"], " ".join(laws)))
@@ -118,6 +138,9 @@ def signature(o):
     if o["drag"] != "SchillerNaumann":
         # (the default leaves the signature of runs made before the option as it was)
         text += "drag=%s\n" % o["drag"]
+    for k in ("density", "diameter", "gasTemperature", "gasPressure"):
+        if o[k]:
+            text += "%s=%s\n" % (k, o[k])
     text += "%s  -\n" % _sha1_file(o["dict"])
     files = []
     for root, _, names in os.walk(o["template"]):

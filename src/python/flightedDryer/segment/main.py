@@ -33,8 +33,10 @@ def prepare(o, run):
                       % (o["reposeAngle"], TOOL), text)
     with open(os.path.join(run, "segment.yaml"), "w") as f:
         f.write(text)
-    if o["gasVelocity"]:
-        fd.set_value(os.path.join(run, "case", "system", "caseParameters"), "Vg", o["gasVelocity"])
+    cp = os.path.join(run, "case", "system", "caseParameters")
+    for opt, entry in (("gasVelocity", "Vg"), ("density", "rhoP"), ("diameter", "diameter")):
+        if o[opt]:
+            fd.set_value(cp, entry, o[opt])
 
 
 def main(argv, usage):

@@ -98,9 +98,10 @@ def mesh(o, run, steps, say):
     """The section meshed, its walls typed, its ends joined (periodic), checked,
     written for ParaView and pictured."""
     case = os.path.join(run, "case")
-    print(open(steps("drumSegmentMesh", ["drumSegmentMesh", "-dict", "segment.yaml", "-length", o["length"],
-                                         "-plateThickness", PLATE, "-releaseWidth", LIP,
-                                         "-level", o["level"], "-out", "mesh"])).read().splitlines()[-1])
+    log = steps("drumSegmentMesh", ["drumSegmentMesh", "-dict", "segment.yaml", "-length", o["length"],
+                                    "-plateThickness", PLATE, "-releaseWidth", LIP, "-level", o["level"],
+                                    "-out", "mesh"])
+    print("".join(line for line in open(log) if line.startswith("drumSegmentMesh: ")), end="", flush=True)
     steps("gmshToFoam", ["gmshToFoam", "-case", "case", "mesh/drumSegment.msh"])
     # gmshToFoam makes every patch a plain patch: the drum wall and the flights are
     # walls, and so are the flight tips until a curtain is released there
@@ -197,6 +198,11 @@ def curtains(o, run, R, steps, say):
         fd.set_value(cd, "writeInterval", str(end // 3))
     zmid = g6(float(o["length"]) / 2)     # the mid-segment section
     shutil.copytree(os.path.join(o["template"], "constant"), os.path.join(case, "constant"), dirs_exist_ok=True)
+    if o["gas"]:
+        # air at -gasTemperature and -gasPressure (flightedDryer.gas, as curtainCase's)
+        tp = os.path.join(case, "constant", "transportProperties")
+        fd.set_value(tp, "rho", o["gas"][0])
+        fd.set_value(tp, "nu", o["gas"][1])
     if os.path.exists(os.path.join(case, "constant", "fvOptions.periodic")):
         os.remove(os.path.join(case, "constant", "fvOptions.periodic"))
     os.makedirs(os.path.join(case, "0"), exist_ok=True)

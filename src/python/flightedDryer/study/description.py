@@ -14,10 +14,13 @@ from ..errors import InputError
 DRUM_SECTIONS = ("drum", "flights", "material", "gas", "model", "rtd")
 STUDY_KEYS = {
     # key: (default, check, meaning for the report)
-    "scene": ("box", ("box",), "curtain scene: a box as wide as the drum"),
+    "scene": ("box", ("box", "drumSegment"), "curtain scene: a box as wide as the drum (drumSegment: the drum's "
+              "own cross-section, every flight's curtain at once)"),
     "level": ("coarse", ("coarse", "medium", "fine"), "curtain mesh level"),
     # (the drag laws are the C++ side's: facts.drag_laws, asked when a description is read)
     "drag": ("SchillerNaumann", "dragLaws", "the particles' drag law in the curtain runs"),
+    "stop": ("statistical", ("statistical", "fixed"), "a drum segment's stop: when its means are known "
+             "(statistical) or after its local steps, the last third's means (fixed)"),
     "iterations": (300, (30, 100000), "curtain iterations per run (the steady stop comes first)"),
     "margin": (0.25, (0.0, 2.0), "share the table's grid reaches beyond the drum model's queries"),
     "table": (None, None, "a drift table to use instead of sweeping one"),
@@ -101,6 +104,11 @@ class Description:
         self.study = self._study(data.get("study") or {})
         self._model()
         self._rtd()
+        from .segment import check, table_kind
+        if self.study["table"] and table_kind(self.study["table"]) == "segment":
+            check(self, sweep=False)
+        elif self.study["scene"] == "drumSegment":
+            check(self)
 
     def where(self, entry):
         return "%s:%s: entry '%s'" % (self.path, self.lines.get(entry.split(".")[0], "?"), entry)
@@ -125,8 +133,7 @@ class Description:
                 check = facts.drag_laws()
             if isinstance(check, tuple) and check and isinstance(check[0], str):
                 if v not in check:
-                    raise InputError("%s = '%s' is not one of %s%s" % (self.where("study." + key), v, " ".join(check),
-                                     " (the drum segment scene is not yet a study's)" if key == "scene" else ""))
+                    raise InputError("%s = '%s' is not one of %s" % (self.where("study." + key), v, " ".join(check)))
             elif isinstance(check, tuple):
                 if isinstance(v, bool) or not isinstance(v, (int, float)) or not check[0] <= v <= check[1]:
                     raise InputError("%s = %s outside the allowed range [%g, %g]"
@@ -140,6 +147,18 @@ class Description:
                 if not os.path.isfile(v):
                     raise InputError("%s: no such table %s" % (self.where("study.table"), v))
             out[key] = v
+        if out["scene"] != "drumSegment":
+            # the stop is the drum segment's (a box stops when its drift is steady)
+            if "stop" in given:
+                raise InputError("%s belongs to scene drumSegment (a box curtain stops when its drift is steady)"
+                                 % self.where("study.stop"))
+            self.defaults = [x for x in self.defaults if x[0] != "study.stop"]
+        if out["scene"] == "drumSegment" and "iterations" not in given:
+            # a drum segment's cap is its template's (it stops when its means are known)
+            out["iterations"] = None
+            self.defaults = [x for x in self.defaults if x[0] != "study.iterations"]
+            self.defaults.append(("study.iterations", "the segment template's cap",
+                                  "local steps a drum segment may take (it stops when its means are known)"))
         return out
 
     def _curve(self, v):

@@ -61,7 +61,7 @@ def template(desc):
     return os.path.join("etc", "templates", "curtain", name)
 
 
-def scene(q, desc):
+def scene(q, desc, requested="box"):
     """What the drift needs, from the drum model's queries: {scene, route, why}.
     - none: no gas flows (every query at V_g 0): the gas drifts nothing, the drift
       along the drum is the incline's alone and no curtain run can change it;
@@ -69,7 +69,9 @@ def scene(q, desc):
       solids fraction of a curtain's edge (particleDrag::curtainEdgeSolidsFraction):
       no part of any curtain shields the gas (a table would hold V_c/V_g 1 throughout),
       so lone particles are the curtain's answer;
-    - box: the curtain shields the gas: a drift table of box curtains as wide as the drum."""
+    - box: the curtain shields the gas: a drift table of box curtains as wide as the drum;
+    - drumSegment (on request, study.scene): the curtain shields the gas: a table of
+      the drum's own cross-section, every releasing flight's curtain at once."""
     vmax = q["gas_velocity_m_s"][1]
     if not vmax > 0:
         return {"scene": "none", "route": "isolated",
@@ -86,6 +88,13 @@ def scene(q, desc):
                 "why": "the densest release (spill %.4g kg/(m s) through the %g m layer at %g m/s) leaves the "
                        "flight at solids fraction %.3g, below a curtain's edge (%.3g): no curtain shields the gas, "
                        "so lone particles are the curtain's answer and no curtain run is needed"
+                       % (smax, b, v, alpha, edge)}
+    if requested == "drumSegment":
+        return {"scene": "drumSegment", "route": "segment",
+                "why": "the densest release (spill %.4g kg/(m s) through the %g m layer at %g m/s) leaves the flight at "
+                       "solids fraction %.3g, above a curtain's edge (%.3g): the curtain shields the gas; the "
+                       "description asks for the drum segment (study.scene), so the drift comes from the drum's own "
+                       "cross-section, every releasing flight's curtain at once, V_c/V_g per release angle"
                        % (smax, b, v, alpha, edge)}
     return {"scene": "box", "route": "table",
             "why": "the densest release (spill %.4g kg/(m s) through the %g m layer at %g m/s) leaves the flight at "

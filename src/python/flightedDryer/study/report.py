@@ -15,7 +15,9 @@ TEMPLATE = os.path.join(PROJECT, "etc", "templates", "study")
 LABELS = {"table": "CFD drift table", "sherritt": "Eq 142 (Sherritt)", "isolated": "lone particles",
           "tableLow": "CFD table, low end of the band", "tableHigh": "CFD table, high end of the band",
           "isolatedLow": "lone particles, low end of the band",
-          "isolatedHigh": "lone particles, high end of the band"}
+          "isolatedHigh": "lone particles, high end of the band", "segment": "CFD drum segments",
+          "segmentLow": "CFD drum segments, low end of the band",
+          "segmentHigh": "CFD drum segments, high end of the band"}
 
 
 def _primary(names):
@@ -69,7 +71,7 @@ def rtd_figure(work, desc, out, names):
         ax.fill_between(lo[0][:n], [min(a, b) for a, b in zip(lo[1][:n], hi[1][:n])],
                         [max(a, b) for a, b in zip(lo[1][:n], hi[1][:n])], color="tab:blue", alpha=0.2,
                         label="%s, error band" % LABELS[own])
-        for name, style in (("table", "-"), ("sherritt", "--"), ("isolated", ":")):
+        for name, style in (("table", "-"), ("segment", "-"), ("sherritt", "--"), ("isolated", ":")):
             if name in curves:
                 ax.plot(curves[name][0], curves[name][1], style, label=LABELS[name])
         if tracer:
@@ -134,7 +136,7 @@ def curve_figure(rows, entry, out):
     pick = lambda route, col: [next(r[col] for r in rows if r["route"] == route and r["value"] == v) for v in values]
     axs[1].fill_between(values, pick(low, "mean_residence_time_min"), pick(high, "mean_residence_time_min"),
                         color="tab:blue", alpha=0.2, label="%s, error band" % LABELS[own])
-    for name, style in (("table", "-o"), ("sherritt", "--s"), ("isolated", ":^")):
+    for name, style in (("table", "-o"), ("segment", "-o"), ("sherritt", "--s"), ("isolated", ":^")):
         if name in names:
             axs[0].plot(values, pick(name, "holdup_kg"), style, label=LABELS[name])
             axs[1].plot(values, pick(name, "mean_residence_time_min"), style, label=LABELS[name])

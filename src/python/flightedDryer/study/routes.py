@@ -33,14 +33,20 @@ def error_band():
     return e, "%s (cv_height, cv_material: the larger)" % os.path.relpath(SCORES, PROJECT)
 
 
-def route_settings(table, e):
+def route_settings(table, e, kind="table"):
     """(name, model.drift, drift section) of every route, the study's own route first
-    and its band last: the CFD table's, or without a table (a scene that needs no
-    curtain run) the lone particles'."""
+    and its band last: the CFD table's (kind table), the drum segments' (kind
+    segment: V_c/V_g per release angle, the release angles beyond the runs' flights
+    at their nearest), or without a table (a scene that needs no curtain run) the
+    lone particles'."""
     lo, hi = float("%.6g" % math.exp(-e)), float("%.6g" % math.exp(e))
     if table is None:
         return [("isolated", "isolated", {}), ("sherritt", "sherritt", {}),
                 ("isolatedLow", "isolated", {"scale": lo}), ("isolatedHigh", "isolated", {"scale": hi})]
+    if kind == "segment":
+        t = {"segmentTable": table, "outside": "clamp"}
+        return [("segment", "segmentVc", dict(t)), ("sherritt", "sherritt", {}), ("isolated", "isolated", {}),
+                ("segmentLow", "segmentVc", dict(t, scale=lo)), ("segmentHigh", "segmentVc", dict(t, scale=hi))]
     t = {"table": table}
     return [("table", "table", dict(t)), ("sherritt", "sherritt", {}), ("isolated", "isolated", {}),
             ("tableLow", "table", dict(t, scale=lo)), ("tableHigh", "table", dict(t, scale=hi))]
@@ -74,12 +80,12 @@ def quantiles(results):
     return out
 
 
-def run_routes(desc, table, e, work, say, override=None):
+def run_routes(desc, table, e, work, say, override=None, kind="table"):
     """Every route's drumSolver run in work/<route>, the band's routes at exp(+-e)
     (on an operating curve, with override = (SECTION.KEY, value)); the rows of
     routes.csv."""
     rows = []
-    for name, drift, section in route_settings(table, e):
+    for name, drift, section in route_settings(table, e, kind):
         case = os.path.join(work, name)
         os.makedirs(case, exist_ok=True)
         atomic_write(os.path.join(case, "drumDict"), desc.drum_dict(drift, section, override))

@@ -182,6 +182,18 @@ def read_segment_sweep(d):
     s["segmentLength"] = None
     if d.has("segmentLength"):
         s["segmentLength"] = d.scalar("segmentLength", 0.1, 100, "m")
+    # the particles and the gas (default: the template's: the Invicta crystal in air at 80 degC)
+    s["particleDensity"] = d.scalar("particleDensity", 10, 25000, "kg/m3") if d.has("particleDensity") else None
+    s["diameter"] = d.scalar("diameter", 1e-6, 0.05, "m") if d.has("diameter") else None
+    s["gasTemperature"] = d.scalar("gasTemperature", -50, 1500, "degC") if d.has("gasTemperature") else None
+    s["gasPressure"] = d.scalar("gasPressure", 10, 1000, "kPa") if d.has("gasPressure") else None
+    if s["gasTemperature"] is not None or s["gasPressure"] is not None:
+        try:
+            gas.air_properties(20.0 if s["gasTemperature"] is None else s["gasTemperature"], s["gasPressure"],
+                               entry="gasTemperature",
+                               warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
+        except gas.GasError as e:
+            raise InputError("%s: entries 'gasTemperature', 'gasPressure': %s" % (d.where("gasTemperature"), e))
     s["grid"] = {"reposeAngle": d.scalar_list("grid/reposeAngle", 20, 70, "deg", lo_closed=True),
                  "gasVelocity": d.scalar_list("grid/gasVelocity", 0.05, 10, "m/s", lo_closed=True)}
     outputs(d, s, "segmentTable.csv")

@@ -36,6 +36,18 @@ def parse(argv, usage):
     for k in ("-jobs", "-np"):
         if not opts[k].isdigit() or not 1 <= int(opts[k]) <= 256:
             raise InputError("%s = '%s' outside the allowed range [1, 256] (whole number)" % (k, opts[k]))
+    check_scheduler(opts)
+    return opts
+
+
+SCHEDULER_OPTIONS = ("-scheduler", "-partition", "-account", "-time", "-sbatchOptions")
+
+
+def check_scheduler(opts):
+    """The scheduler's options (-scheduler, and Slurm's -partition, -account, -time,
+    -sbatchOptions, -noWait) checked; opts["sbatchExtra"] set. dryerStudy checks
+    its own with it before planning."""
+    opts.setdefault("-scheduler", "local")
     if opts["-scheduler"] not in ("local", "slurm"):
         raise InputError("-scheduler '%s' is not one of local slurm" % opts["-scheduler"])
     for k in ("-partition", "-account", "-time", "-sbatchOptions", "-noWait"):
@@ -53,7 +65,6 @@ def parse(argv, usage):
                                                          "--parsable", "--wrap"):
             raise InputError("-sbatchOptions: '%s': give long options (--name=value) other than "
                             "--array, --output, --dependency, --wrap, which buildDriftTable sets" % o)
-    return opts
 
 
 def main(argv, usage):

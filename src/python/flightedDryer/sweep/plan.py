@@ -34,6 +34,10 @@ def segment_cases(s):
             args += ["-stop", "fixed"]
         if s["segmentLength"] is not None:
             args += ["-segmentLength", "%.12g" % s["segmentLength"]]
+        for entry, opt in (("particleDensity", "-density"), ("diameter", "-diameters"),
+                           ("gasTemperature", "-gasTemperature"), ("gasPressure", "-gasPressure")):
+            if s.get(entry) is not None:
+                args += [opt, "%.12g" % s[entry]]
         if os.path.realpath(s["template"]) != os.path.realpath(os.path.join(PROJECT, SEGMENT_TEMPLATE)):
             args += ["-template", s["template"]]
         out.append({"name": "phi%s_Vg%s" % (g6(phi), g6(V)), "phi": phi, "V": V, "args": args})

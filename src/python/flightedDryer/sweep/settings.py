@@ -28,7 +28,8 @@ GRID_KEYS = GRID_ENTRIES
 # (drumSegmentCase) per dynamic angle of repose and gas velocity, every releasing
 # flight's curtain at once; the table is writeSegmentTable's
 SEGMENT_TOP_KEYS = ("FoamFile", "scene", "flights", "template", "level", "iterations", "ends",
-                    "segmentLength", "drag", "stop", "grid", "output", "work")
+                    "segmentLength", "drag", "stop", "grid", "output", "work", "particleDensity", "diameter",
+                    "gasTemperature", "gasPressure")
 SEGMENT_GRID_KEYS = ("reposeAngle", "gasVelocity")
 SCENES = ("box", "drumSegment")
 

@@ -5,7 +5,7 @@ file and the entry); the grid of a plan covers the queries it was made from."""
 import pytest
 
 from flightedDryer.errors import InputError
-from flightedDryer.study import plan
+from flightedDryer.study import plan, routes, segment
 from flightedDryer.study.description import Description
 
 GOOD = """drum: {length: 12, diameter: 5, slope_deg: 2.8, speed_rpm: 3}
@@ -35,7 +35,14 @@ def test_defaults_are_named(tmp_path):
     ("studdy: {level: coarse}\n", r"dryer.yaml:5: unknown section 'studdy' \(did you mean 'study'\?\)"),
     ("study: {levl: fine}\n", r"entry 'study.levl': unknown \(did you mean 'study.level'\?\)"),
     ("study: {margin: 5}\n", r"entry 'study.margin' = 5 outside the allowed range \[0, 2\]"),
-    ("study: {scene: drumSegment}\n", r"entry 'study.scene' = 'drumSegment' is not one of box"),
+    ("study: {scene: drum}\n", r"entry 'study.scene' = 'drum' is not one of box drumSegment"),
+    ("study: {scene: drumSegment, stop: fixed, iterations: 100}\n", r"entry 'study.iterations' = 100: a drum "
+     r"segment's local steps are a whole multiple of 3"),
+    ("study: {scene: drumSegment, iterations: 300}\n", r"entry 'study.iterations' = 300: a statistical stop needs "
+     r"at least 450 local steps"),
+    ("study: {stop: fixed}\n", r"entry 'study.stop' belongs to scene drumSegment"),
+    ("model: {type: twoPhase}\nstudy: {scene: drumSegment}\n", r"entry 'study.scene': a drum-segment table serves "
+     r"the compartment model with partition flightModel"),
     ("study: {table: nothere.csv}\n", r"entry 'study.table': no such table"),
     ("model: {type: compartment, drift: table}\n", r"entry 'model.drift': the study sets the drift per route"),
     ("study: {curve: {entry: gas.massRate, values: [10]}}\n", r"entry 'study.curve.values' must be a list of 2"),
@@ -96,3 +103,40 @@ def test_the_scene_is_no_more_than_the_drift_needs(tmp_path):
     assert box["scene"] == "box" and box["route"] == "table" and "windTunnel" in box["why"]
     # a NaN spill is not taken for a dilute one
     assert plan.scene(_queries(1.5, float("nan")), d)["scene"] == "box"
+
+
+def test_the_segment_scene_plans_from_the_drum_models_angles(tmp_path):
+    d = Description(write(tmp_path, GOOD + "study: {scene: drumSegment}\n"))
+    assert d.study["iterations"] is None and d.study["stop"] == "statistical"
+    assert ("study.stop", "statistical") in [(e, v) for e, v, _ in d.defaults]
+    q = dict(_queries(1.0, 29.0), repose_angle_deg=(36.94, 58.94), release_angle_deg=(86.3, 211.9))
+    assert plan.scene(q, d, "drumSegment")["route"] == "segment"
+    # a dilute release needs lone particles whatever scene was asked for
+    assert plan.scene(dict(q, spill_rate_kg_m_s=(0.001, 0.002)), d, "drumSegment")["scene"] == "lone"
+    g = segment.grid(q, d.study)
+    # whole degrees around the drum model's, at most 12 deg apart
+    assert g["reposeAngle"] == [36.0, 47.5, 59.0] and segment.covers(g, q) == []
+    assert g["gasVelocity"][0] < 1.0 < g["gasVelocity"][-1] and segment.runs(g) == 6
+    assert segment.covers(g, dict(q, repose_angle_deg=(30.0, 50.0))) == ["repose_angle_deg"]
+    with pytest.raises(InputError, match=r"dynamic angles of repose 15-50 deg lie outside"):
+        segment.grid(dict(q, repose_angle_deg=(15.0, 50.0)), d.study)
+    # one particle: the mass-weighted median class (60 % at 900 um)
+    assert segment.particle(d) == (9e-4, 1590.0)
+    text = segment.flight_dictionary(d, 0.5432109, 47.5)
+    assert "bedDepth: 0.543211" in text and "nFlights: 28" in text and "radius: 2.5" in text
+    assert "tipAngle: 117.0" in text and "dynamicAngleOfRepose: 47.5" in text
+    sweep = segment.sweep_dict(g, d, d.study, "/f.yaml", str(tmp_path / "s.csv"), 80.0)
+    for entry in ("scene drumSegment;", "stop statistical;", "diameter 0.0009;", "particleDensity 1590;",
+                  "gasTemperature 80;", "reposeAngle (36 47.5 59);", "segmentLength 1.133;"):
+        assert entry in sweep, entry
+    assert "iterations" not in sweep
+    assert segment.cpu_estimate_s(g, 26748, d.study) > 6 * segment.RUN_OVERHEAD_S
+    names = [r[0] for r in routes.route_settings("/t.csv", 0.37, "segment")]
+    assert names == ["segment", "sherritt", "isolated", "segmentLow", "segmentHigh"]
+    assert routes.route_settings("/t.csv", 0.37, "segment")[0][2] == {"segmentTable": "/t.csv", "outside": "clamp"}
+
+
+def test_the_union_of_queries_keeps_an_axis_only_one_has():
+    a = {"x": (1.0, 2.0)}
+    b = {"x": (0.5, 1.5), "repose_angle_deg": (36.0, 59.0)}
+    assert plan.union(a, b) == {"x": (0.5, 2.0), "repose_angle_deg": (36.0, 59.0)}
