@@ -61,6 +61,8 @@ Description
 
 #include <cmath>
 
+#include "readStartField.H"
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -89,6 +91,7 @@ int main(int argc, char *argv[])
     #include "createTimeControls.H"
     #include "createRDeltaT.H"
     #include "createFields.H"
+    #include "startFields.H"
     #include "createFvOptions.H"
 
     turbulence->validate();

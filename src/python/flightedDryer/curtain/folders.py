@@ -26,7 +26,7 @@ def signature(s):
     not resumed."""
     h = hashlib.sha256()
     keys = sorted(k for k in s if k not in ("dir", "argv", "keep", "check", "np", "names", "window",
-                                            "every", "end"))
+                                            "every", "end", "startFromDir"))
     h.update(json.dumps({k: s[k] for k in keys}, sort_keys=True, default=str).encode())
     for root, dirs, files in sorted(os.walk(s["template"])):
         dirs.sort()

@@ -120,6 +120,13 @@ def check_inputs(opts):
     s["iterations"] = int(number(opts, "-iterations", 9, 100000, "iterations")) \
         if "-iterations" in opts else int(endTime)
     s["keep"] = bool(opts.get("-keep"))
+    if "-startFrom" in opts:
+        # a warm start from a finished run on the same mesh (kept with -keep); the
+        # signature holds its folder's name (a sweep plans it before it has run)
+        if s["np"] > 1:
+            raise InputError("-startFrom needs -np 1 (the source's fields are read onto the whole mesh)")
+        s["startFromDir"] = os.path.abspath(opts["-startFrom"])
+        s["startFrom"] = os.path.basename(s["startFromDir"])
     # steady window, sampling interval (= write interval / 5) and end of the first stage
     n = s["iterations"]
     s["window"] = max(3, min(50, n // 3))

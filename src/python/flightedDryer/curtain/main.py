@@ -21,7 +21,7 @@ VALUED = {"-dir", "-gasVelocity", "-spillRate", "-fallHeight", "-flightLength",
           "-density", "-diameters", "-fractions", "-heights", "-level", "-np",
           "-drag", "-iterations", "-template", "-sphericity", "-particleTurbulence",
           "-turbulentDispersion", "-particleParticleDrag", "-turbulence", "-wakeShare", "-releaseVelocity",
-          "-layerThickness", "-bulkDensity", "-boxWidth", "-gasTemperature", "-gasPressure"}
+          "-layerThickness", "-bulkDensity", "-boxWidth", "-gasTemperature", "-gasPressure", "-startFrom"}
 REQUIRED = ("-dir", "-gasVelocity", "-spillRate", "-fallHeight", "-flightLength",
             "-density", "-diameters", "-fractions")
 

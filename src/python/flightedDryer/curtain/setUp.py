@@ -10,7 +10,8 @@ from .. import foamDictionary
 from ..errors import InputError, RunError
 from . import dictionaries as fd
 from .dictionaries import set_entry
-from .settings import CAPTURED_GATE, DRIFT_ABS_TOL, LANDING_BIN, REL_TOL, VC_ABS_TOL, VC_REL_TOL
+from .settings import (CAPTURED_GATE, DRIFT_ABS_TOL, LANDING_BIN, REL_TOL, VC_ABS_TOL, VC_REL_TOL,
+                       WARM_CHECK_FROM)
 
 
 def copy_template(src, dst):
@@ -54,6 +55,12 @@ def vertical_sections(Y, heights, dy):
 
 def round_up(n, m):
     return ((n + m - 1) // m) * m
+
+
+def check_from(s):
+    """The first iteration the steady window may end at: half the iterations from
+    still gas; from a neighbour's fields (-startFrom) WARM_CHECK_FROM windows."""
+    return WARM_CHECK_FROM * s["window"] if "startFrom" in s else s["iterations"] // 2
 
 
 def set_up(s, case):
@@ -160,12 +167,12 @@ def set_up(s, case):
             "gates { %s } gateMin %g; requireChecked yes; window %d; tolerance %g; "
             "absTolerance %g; startTime %d; groupID 1; }"
             % (i, i, " ".join(fields), gates, CAPTURED_GATE, s["window"], REL_TOL,
-               DRIFT_ABS_TOL, n // 2))
+               DRIFT_ABS_TOL, check_from(s)))
         conditions.append(
             "gas%d { type steadyWindow; functionObject gas%d; fields (VcByVg); "
             "gates { VcByVg solidsVolume; } gateMin %g; window %d; tolerance %g; "
             "absTolerance %g; startTime %d; groupID 1; }"
-            % (i, i, 1e-300, s["window"], VC_REL_TOL, VC_ABS_TOL, n // 2))
+            % (i, i, 1e-300, s["window"], VC_REL_TOL, VC_ABS_TOL, check_from(s)))
     set_entry(cd, "functions/massBalance",
               "{ type solidsMassBalance; libs (curtainModels); writeControl timeStep; "
               "writeInterval %d; }" % s["every"])

@@ -210,7 +210,7 @@ def cpu_estimate_s(g, cells, study):
     segments' measured cost per cell and step; the steps a statistical stop took
     there (on average) or the cap, whichever is fewer, plus a start-up per run."""
     with open(STOP_BENCHMARK, newline="") as f:
-        rows = list(csv.DictReader(f))
+        rows = [r for r in csv.DictReader(f) if r["case"] != "total"]
     with open(SHIPPED_SEGMENT) as f:
         head = next(line for line in f if line.startswith("# mesh:"))
     shipped_cells = [int(c) for c in re.findall(r"(\d+) cells", head)]

@@ -67,6 +67,8 @@ def read_sweep(dict_path):
             raise InputError("%s: entry 'gasTemperature': %s" % (d.where("gasTemperature"), e))
     s["gasPressure"] = d.scalar("gasPressure", 10, 1000, "kPa") if d.has("gasPressure") else None
     s["boxWidth"] = d.scalar("boxWidth", 0, 20, "m") if d.has("boxWidth") else None
+    # each run of a mesh from its neighbour's fields (plan.chains_of), or from still gas
+    s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
     s["iterations"] = d.whole("iterations", 9, 100000)
     s["layerThickness"] = None
     if d.has("layerThickness"):

@@ -10,7 +10,7 @@ import time
 
 from ..errors import InputError
 from ..processes import Children
-from .plan import case_args, case_log, finished
+from .plan import case_args, case_log, chains_of, finished
 from .settings import case_option_entries, say
 
 
@@ -89,25 +89,45 @@ class Sweep:
         eta = "?" if mean is None else "%.0f s" % (mean * left / max(1, min(self.jobs, left or 1)))
         return "%d/%d cases done this run, %.0f s elapsed, about %s left" % (n_done, n_todo, el, eta)
 
+    def run_chain(self, chain, finished_cases):
+        """The cases of one unit in order (a warm-start chain: each from the one before;
+        otherwise a single case); the rest of a chain is not run once one fails."""
+        for k, c in enumerate(chain):
+            say("starting %s%s" % (c["name"], " (from %s)" % c["parent"] if c.get("parent") else ""))
+            c["ok"] = self.run_case(c)
+            finished_cases.append(c)
+            if not c["ok"]:
+                for later in chain[k + 1:]:
+                    if not self.stopping:
+                        with self.lock:
+                            self.failed[later["name"]] = "not run: its warm start's source %s failed" % c["name"]
+                    later["ok"] = False
+                    finished_cases.append(later)
+                return
+
     def run(self, todo):
-        queue = list(todo)
+        names = {c["name"] for c in todo}
+        if self.s.get("warmStart"):
+            queue = [[c for c in chain if c["name"] in names] for chain in chains_of(self.s, self.cases)]
+            queue = [u for u in queue if u]
+        else:
+            queue = [[c] for c in todo]
         active = []
+        ended = []
         n_done = 0
         while queue or active:
             while queue and len(active) < self.jobs and not self.stopping:
-                c = queue.pop(0)
-                say("starting %s" % c["name"])
-                th = threading.Thread(target=lambda c=c: c.__setitem__("ok", self.run_case(c)))
+                unit = queue.pop(0)
+                th = threading.Thread(target=lambda u=unit: self.run_chain(u, ended))
                 th.start()
-                active.append((c, th))
+                active.append(th)
             time.sleep(0.5)
-            for c, th in list(active):
-                if not th.is_alive():
-                    active.remove((c, th))
-                    n_done += 1
-                    say("%s %s; %s" % (c["name"], "done" if c.get("ok") else
-                                       ("stopped" if self.stopping else "failed"),
-                                       self.progress(n_done, len(todo))))
+            active = [th for th in active if th.is_alive()]
+            while ended:    # (after the threads that ended: what they reported is all here)
+                c = ended.pop(0)
+                n_done += 1
+                say("%s %s; %s" % (c["name"], "done" if c.get("ok") else
+                                   ("stopped" if self.stopping else "failed"), self.progress(n_done, len(todo))))
             if self.stopping and not active:
                 break
 

@@ -18,7 +18,7 @@ from .dictionary import read_sweep
 from .localPool import Sweep, check_cases, tail_reason
 from .plan import case_log, cases_of, finished, grid_key, read_result, run_axes
 from .settings import say
-from .slurm import print_status, read_submission, run_slurm, slurm_dir, task_reason, write_slurm
+from .slurm import print_status, read_submission, run_slurm, slurm_dir, task_reason, unit_of, units, write_slurm
 from .table import write_table
 
 
@@ -101,6 +101,9 @@ def run_main(argv, usage):
     if s["scene"] == "drumSegment" and opts.get("-allowIncomplete"):
         raise InputError("-allowIncomplete is not available for scene drumSegment (a segment table "
                          "is written whole)")
+    if s.get("warmStart") and np_ > 1:
+        raise InputError("%s: entry 'warmStart yes' needs -np 1 (a run reads its neighbour's fields onto "
+                         "the whole mesh)" % s["dict"])
     cases = cases_of(s)
     if opts.get("-status"):
         n = print_status(s, cases)
@@ -125,7 +128,7 @@ def run_main(argv, usage):
     if opts.get("-slurm"):
         # every case: the tasks skip the ones finished when they run
         script, collect, lst = write_slurm(s, cases, cases, np_, sched)
-        say("wrote %s (array of %d tasks), %s and %s; nothing run" % (script, len(cases), lst, collect))
+        say("wrote %s (array of %d tasks), %s and %s; nothing run" % (script, len(units(s, cases)), lst, collect))
         return 0
 
     state_path = os.path.join(s["work"], "sweep.json")
@@ -196,7 +199,7 @@ def run_main(argv, usage):
     ok = {c["name"] for c in cases if finished(s, c)}
     failed = dict(sweep.failed)
     sub = read_submission(s)
-    index = {c["name"]: i for i, c in enumerate(cases)}
+    index = unit_of(s, cases)
     for c in cases:   # failures of earlier runs of the sweep, from the case logs or Slurm tasks
         log = case_log(s, c)
         if c["name"] in ok or c["name"] in failed:

@@ -52,10 +52,39 @@ def cases_of(s):
     if s["scene"] == "drumSegment":
         return segment_cases(s)
     g = s["grid"]
-    return [box_case(s, V, S, L, rho, Y)
-            for V, S, L, rho in itertools.product(g["gasVelocity"], g["spillRate"], g["flightLength"],
-                                                  g["particleDensity"])
-            for Y in s["floors"]]
+    cases = [box_case(s, V, S, L, rho, Y)
+             for V, S, L, rho in itertools.product(g["gasVelocity"], g["spillRate"], g["flightLength"],
+                                                   g["particleDensity"])
+             for Y in s["floors"]]
+    if s.get("warmStart"):
+        for chain in chains_of(s, cases):
+            for a, b in zip(chain, chain[1:]):
+                # a keeps its fields for b, which starts from them
+                a["args"] = a["args"] + ["-keep"]
+                b["args"] = b["args"] + ["-startFrom", case_dir(s, a)]
+                b["parent"] = a["name"]
+    return cases
+
+
+def chains_of(s, cases):
+    """warmStart: the runs that share a mesh (a flight length, density and floor; with a
+    packed layer also a spill rate, which sets the layer) in one chain, each run
+    starting from the one before it: the gas velocities in turn, the spill rates up
+    and down in turn (neighbours on the grid). Fixed by the plan, so the local pool,
+    -jobs N and Slurm start every run from the same fields. A list of chains, each a
+    list of the cases in order."""
+    groups = {}
+    for c in cases:
+        key = (c["L"], c["rho"], c["floor"]) + ((c["S"],) if s.get("layerThickness") == "packed" else ())
+        groups.setdefault(key, []).append(c)
+    vs = sorted({c["V"] for c in cases})
+    out = []
+    for key in sorted(groups):
+        def order(c):
+            i = vs.index(c["V"])
+            return (i, c["S"] if i % 2 == 0 else -c["S"])
+        out.append(sorted(groups[key], key=order))
+    return out
 
 
 def box_case(s, V, S, L, rho, Y):

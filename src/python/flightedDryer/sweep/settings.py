@@ -22,7 +22,7 @@ LANDING = "curtainLanding.csv"
 ARGS = "curtainCase.args.json"
 TOP_KEYS = ("FoamFile", "scene", "template", "level", "iterations", "drag", "particleTurbulence", "grid",
             "massFractions", "material", "sizeClasses", "output", "work", "turbulence", "wakeShare",
-            "gasTemperature", "gasPressure", "boxWidth", "layerThickness", "bulkDensity", "floors")
+            "gasTemperature", "gasPressure", "boxWidth", "layerThickness", "bulkDensity", "floors", "warmStart")
 GRID_KEYS = GRID_ENTRIES
 # the drum-segment scene (scene drumSegment): one curtainCase -scene drumSegment run
 # (drumSegmentCase) per dynamic angle of repose and gas velocity, every releasing

@@ -13,7 +13,7 @@ from .. import PROJECT
 from ..errors import SchedulerError
 from ..files import atomic_write
 from .localPool import curtain_reason, log_lines
-from .plan import case_args, finished
+from .plan import case_args, chains_of, finished
 from .settings import ARGS, RESULT, SLURM_POLL, say
 
 
@@ -21,16 +21,38 @@ def slurm_dir(s):
     return os.path.join(s["work"], "slurm")
 
 
+def units(s, cases):
+    """The array's tasks: lists of case indices run in order by one task (warmStart:
+    a chain, each run from the one before; otherwise one case a task, the task
+    index the case's)."""
+    index = {c["name"]: i for i, c in enumerate(cases)}
+    if s.get("warmStart"):
+        return [[index[c["name"]] for c in chain] for chain in chains_of(s, cases)]
+    return [[i] for i in range(len(cases))]
+
+
+def unit_of(s, cases):
+    """{case name: its task's index}."""
+    out = {}
+    for u, unit in enumerate(units(s, cases)):
+        for i in unit:
+            out[cases[i]["name"]] = u
+    return out
+
+
 def write_slurm(s, cases, todo, np_, sched):
-    """The job array (one task per case still to run), its case list and the
-    collect step. Returns (script, collect, case list)."""
+    """The job array (one task per case still to run, or per warm-start chain with
+    one), its case and task lists and the collect step. Returns (script, collect,
+    case list)."""
     d = slurm_dir(s)
     os.makedirs(d, exist_ok=True)
     lst = os.path.join(d, "cases.txt")
     atomic_write(lst, "".join(" ".join(_quote(a) for a in ["curtainCase"] + case_args(s, c, np_)) + "\n"
                               for c in cases))
-    index = {c["name"]: i for i, c in enumerate(cases)}
-    array = array_spec(sorted(index[c["name"]] for c in todo))
+    tasks = os.path.join(d, "tasks.txt")
+    atomic_write(tasks, "".join(" ".join(str(i + 1) for i in unit) + "\n" for unit in units(s, cases)))
+    u = unit_of(s, cases)
+    array = array_spec(sorted({u[c["name"]] for c in todo}))
     script = os.path.join(d, "driftTable.sbatch")
     opts = "".join("#SBATCH %s\n" % o for o in sbatch_options(sched))
     text = """#!/bin/bash
@@ -44,21 +66,28 @@ def write_slurm(s, cases, todo, np_, sched):
 #SBATCH --output={d}/task_%a.out
 {opts}set -uo pipefail
 . {project}/etc/bashrc
-line=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {lst})
-[ -n "$line" ] || {{ echo "no case for task $SLURM_ARRAY_TASK_ID in {lst}" >&2; exit 1; }}
-# a case finished with these inputs (curtainCase -check's signature) is not recomputed
-dir=$(echo "$line" | awk '{{for (i = 1; i < NF; i++) if ($i == "-dir") print $(i+1)}}')
-if [ -f "$dir/{result}" ] && [ -f "$dir/{record}" ]; then
-    want=$(eval "$line -check" 2>/dev/null | awk '/^inputs /{{print $2}}')
-    have=$({read_record})
-    if [ -n "$want" ] && [ "$want" = "$have" ]; then echo "already done: $dir"; exit 0; fi
-fi
-eval "$line"; rc=$?
-# one retry after a failed run (exit 1); bad input (2) or an interrupt would fail again
-if [ $rc -eq 1 ]; then echo "retrying once"; eval "$line"; rc=$?; fi
-exit $rc
+# the task's cases ({tasks}: line numbers of {lst}), run in order: a warm-start chain
+# (each from the one before) or one case
+numbers=$(sed -n "$((SLURM_ARRAY_TASK_ID + 1))p" {tasks})
+[ -n "$numbers" ] || {{ echo "no case for task $SLURM_ARRAY_TASK_ID in {tasks}" >&2; exit 1; }}
+for n in $numbers; do
+    line=$(sed -n "${{n}}p" {lst})
+    [ -n "$line" ] || {{ echo "no case $n in {lst}" >&2; exit 1; }}
+    # a case finished with these inputs (curtainCase -check's signature) is not recomputed
+    dir=$(echo "$line" | awk '{{for (i = 1; i < NF; i++) if ($i == "-dir") print $(i+1)}}')
+    if [ -f "$dir/{result}" ] && [ -f "$dir/{record}" ]; then
+        want=$(eval "$line -check" 2>/dev/null | awk '/^inputs /{{print $2}}')
+        have=$({read_record})
+        if [ -n "$want" ] && [ "$want" = "$have" ]; then echo "already done: $dir"; continue; fi
+    fi
+    eval "$line"; rc=$?
+    # one retry after a failed run (exit 1); bad input (2) or an interrupt would fail again
+    if [ $rc -eq 1 ]; then echo "retrying once"; eval "$line"; rc=$?; fi
+    [ $rc -eq 0 ] || exit $rc
+done
+exit 0
 """.format(script=script, collect=os.path.join(d, "collect.sh"), array=array,
-           np=np_, d=d, project=PROJECT, lst=lst, opts=opts, **finished_record(s))
+           np=np_, d=d, project=PROJECT, lst=lst, tasks=tasks, opts=opts, **finished_record(s))
     atomic_write(script, text)
     collect = os.path.join(d, "collect.sh")
     ctext = """#!/bin/bash
@@ -137,17 +166,21 @@ def read_submission(s):
 
 
 def sweep_status(s, cases, sub):
-    """Per case: done, running, queued, failed (with a reason) or todo."""
-    index = {c["name"]: i for i, c in enumerate(cases)}
+    """Per case: done, running, queued, failed (with a reason) or todo. In a running
+    chain the first unfinished case runs and the later ones wait."""
+    u = unit_of(s, cases)
     array = queue_states(sub["array"]) if sub else {}
     status = {}
+    first = set()    # tasks whose running case is already named
     for c in cases:
-        i = index[c["name"]]
+        i = u[c["name"]]
         if finished(s, c):
             status[c["name"]] = ("done", "")
         elif i in array:
             st = array[i]
-            status[c["name"]] = ("running" if st in ("RUNNING", "COMPLETING") else "queued", st.lower())
+            running = st in ("RUNNING", "COMPLETING") and i not in first
+            first.add(i)
+            status[c["name"]] = ("running" if running else "queued", st.lower())
         elif sub and i in sub["indices"]:
             status[c["name"]] = ("failed", task_reason(s, i))
         else:
@@ -193,13 +226,14 @@ def run_slurm(s, cases, todo, np_, sched, opts):
     gather_args += ["--wrap", "bash %s%s" % (collect, " -allowIncomplete" if opts.get("-allowIncomplete")
                                              else "")]
     gather = sbatch(gather_args)
-    index = {c["name"]: i for i, c in enumerate(cases)}
+    u = unit_of(s, cases)
     sub = {"array": array, "gather": gather, "dict": s["dict"], "output": s["output"],
-           "indices": [index[c["name"]] for c in todo], "submitted": time.time()}
+           "indices": sorted({u[c["name"]] for c in todo}), "submitted": time.time()}
     atomic_write(os.path.join(d, "submission.json"), json.dumps(sub) + "\n")
-    say("submitted %d case(s) as Slurm job array %s, collect step %s (after it); follow with "
+    say("submitted %d case(s) as Slurm job array %s%s, collect step %s (after it); follow with "
         "buildDriftTable -status -work %s; cancel with scancel %s %s"
-        % (len(todo), array, gather, s["work"], array, gather))
+        % (len(todo), array, " (%d warm-start chains)" % len(sub["indices"]) if s.get("warmStart") else "",
+           gather, s["work"], array, gather))
     if opts.get("-noWait"):
         return sub
     shown = None

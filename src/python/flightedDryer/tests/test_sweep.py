@@ -99,3 +99,45 @@ def test_the_slurm_array_is_written_without_a_cluster(tmp_path):
 def test_array_ranges():
     assert slurm.array_spec([0, 1, 2, 3, 5, 7, 8]) == "0-3,5,7-8"
     assert slurm.array_spec([4]) == "4"
+
+
+def test_warm_start_chains_are_the_plans(tmp_path):
+    g = ("grid { gasVelocity (1 3); spillRate (2 5 9); flightLength (1); particleDensity (1590);\n"
+         "       fallHeight (1 2); diameter (3e-4); }\nmassFractions (1);\nfloors (1 2);\n")
+    p = tmp_path / "warmDict"
+    p.write_text(HEAD + g + "warmStart yes;\nwork \"%s\";\n" % (tmp_path / "work"))
+    s = read_sweep(str(p))
+    cases = plan.cases_of(s)
+    chains = plan.chains_of(s, cases)
+    # one chain per floor (a mesh), the spill rates up, then down at the next gas velocity
+    assert [[c["name"].split("_L")[0] for c in ch] for ch in chains] == \
+        [["V1_S2", "V1_S5", "V1_S9", "V3_S9", "V3_S5", "V3_S2"]] * 2
+    assert [c["floor"] for c in chains[0]] == [1.0] * 6
+    by = {c["name"]: c for c in cases}
+    first, second, last = chains[1][0], chains[1][1], chains[1][-1]
+    assert "-startFrom" not in first["args"] and "-keep" in first["args"]
+    assert second["args"][second["args"].index("-startFrom") + 1] == plan.case_dir(s, first)
+    assert second["parent"] == first["name"] and "-keep" not in last["args"]
+    assert by[last["name"]]["parent"] == chains[1][-2]["name"]
+    # the Slurm array: a task per chain, its cases in order
+    slurm.write_slurm(s, cases, cases, 1, {"extra": []})
+    tasks = open(os.path.join(slurm.slurm_dir(s), "tasks.txt")).read().splitlines()
+    index = {c["name"]: i + 1 for i, c in enumerate(cases)}
+    assert tasks == [" ".join(str(index[c["name"]]) for c in ch) for ch in chains]
+    assert slurm.unit_of(s, cases)[last["name"]] == 1
+    # without warmStart: a task per case, no chain arguments
+    cold = plan.cases_of(sweep(tmp_path))
+    assert all("-startFrom" not in c["args"] and "-keep" not in c["args"] for c in cold)
+    assert slurm.units(sweep(tmp_path), cold) == [[i] for i in range(len(cold))]
+
+
+def test_warm_start_with_a_packed_layer_chains_only_one_spill(tmp_path):
+    g = ("grid { gasVelocity (1 3); spillRate (2 5); flightLength (1); particleDensity (1590);\n"
+         "       fallHeight (1); diameter (3e-4); }\nmassFractions (1);\n")
+    p = tmp_path / "warmDict"
+    p.write_text(HEAD + g + "warmStart yes;\nlayerThickness packed;\nbulkDensity 900;\n"
+                 "work \"%s\";\n" % (tmp_path / "work"))
+    s = read_sweep(str(p))
+    chains = plan.chains_of(s, plan.cases_of(s))
+    # the packed layer's thickness follows the spill rate: another mesh per spill
+    assert [[c["name"].split("_L")[0] for c in ch] for ch in chains] == [["V1_S2", "V3_S2"], ["V1_S5", "V3_S5"]]
