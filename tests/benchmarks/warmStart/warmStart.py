@@ -18,15 +18,28 @@ from flightedDryer import files  # noqa: E402
 from flightedDryer.sweep.compare import compare, read_rows  # noqa: E402
 
 
+def solver_cpu(case):
+    """curtainFoam's own CPU time (its last ExecutionTime) in a run's case."""
+    t = None
+    with open(os.path.join(case, "log.curtainFoam"), errors="replace") as f:
+        for line in f:
+            if line.startswith("ExecutionTime = "):
+                t = float(line.split()[2])
+    if t is None:
+        raise SystemExit("warmStart: no ExecutionTime in %s/log.curtainFoam" % case)
+    return t
+
+
 def runs(folder):
-    """{case: (iterations, wall s)} of a sweep's finished runs."""
+    """{case: (iterations, wall s, warm-started, solver CPU s)} of a sweep's finished runs."""
     out = {}
     for name in sorted(os.listdir(folder)):
         path = os.path.join(folder, name, "curtainCase.args.json")
         if os.path.isfile(path):
             with open(path) as f:
                 a = json.load(f)
-            out[name] = (int(a["iterations"]), float(a["wall_time_s"]), "-startFrom" in a["argv"])
+            out[name] = (int(a["iterations"]), float(a["wall_time_s"]), "-startFrom" in a["argv"],
+                         solver_cpu(os.path.join(folder, name, "case")))
     if not out:
         raise SystemExit("warmStart: no finished runs in %s" % folder)
     return out
@@ -55,19 +68,23 @@ def main(work, results):
     for mode in ("cold", "warm"):
         s = sweeps[mode]
         its = [v[0] for v in s["runs"].values()]
+        solver = sum(v[3] for v in s["runs"].values())
+        cold_solver = sum(v[3] for v in cold["runs"].values())
         summary.append({"sweep": mode, "runs": len(its), "warm_started": sum(v[2] for v in s["runs"].values()),
-                        "cpu_s": s["cpu"], "wall_s": s["wall"], "iterations_total": sum(its),
+                        "cpu_s": s["cpu"], "solver_cpu_s": solver, "wall_s": s["wall"], "iterations_total": sum(its),
                         "iterations_min": min(its), "iterations_max": max(its),
-                        "cpu_over_cold": s["cpu"] / cold["cpu"]})
+                        "cpu_over_cold": s["cpu"] / cold["cpu"], "solver_cpu_over_cold": solver / cold_solver})
     files.atomic_write(os.path.join(results, "summary.csv"),
                        "# regenerate: tests/benchmarks/warmStart/run (2 cores)\n" + csv_text(
-                           ["sweep", "runs", "warm_started", "cpu_s", "wall_s", "iterations_total", "iterations_min",
-                            "iterations_max", "cpu_over_cold"], summary, g))
+                           ["sweep", "runs", "warm_started", "cpu_s", "solver_cpu_s", "wall_s", "iterations_total",
+                            "iterations_min", "iterations_max", "cpu_over_cold", "solver_cpu_over_cold"], summary, g))
     cases = [{"case": n, "cold_iterations": cold["runs"][n][0], "warm_iterations": warm["runs"][n][0],
               "cold_wall_s": cold["runs"][n][1], "warm_wall_s": warm["runs"][n][1],
+              "cold_solver_cpu_s": cold["runs"][n][3], "warm_solver_cpu_s": warm["runs"][n][3],
               "warm_started": "yes" if warm["runs"][n][2] else "no"} for n in sorted(cold["runs"])]
     files.atomic_write(os.path.join(results, "cases.csv"), csv_text(
-        ["case", "cold_iterations", "warm_iterations", "cold_wall_s", "warm_wall_s", "warm_started"], cases, g))
+        ["case", "cold_iterations", "warm_iterations", "cold_wall_s", "warm_wall_s", "cold_solver_cpu_s",
+         "warm_solver_cpu_s", "warm_started"], cases, g))
     cmp = compare(os.path.join(work, "cold.csv"), os.path.join(work, "warm.csv"))
     cols = ["column", "rows", "outside", "max_abs_diff", "max_rel_diff", "worst_row", "rel_tolerance",
             "abs_tolerance"]
@@ -91,7 +108,7 @@ def figure(cases, cold_csv, warm_csv, out, summary):
     x = range(len(cases))
     axs[0].bar([i - 0.2 for i in x], [c["cold_iterations"] for c in cases], 0.4, label="from still gas")
     axs[0].bar([i + 0.2 for i in x], [c["warm_iterations"] for c in cases], 0.4, label="from a neighbour")
-    axs[0].set_xlabel("run (sweep order)")
+    axs[0].set_xlabel("run (by name)")
     axs[0].set_ylabel("iterations to a steady drift")
     axs[0].set_title("CPU: warm %.2f of cold" % summary[1]["cpu_over_cold"])
     axs[0].legend(fontsize=8)

@@ -14,7 +14,7 @@ SEGMENT_OPTIONS = {"-dir": "-out", "-flights": "-dict", "-gasVelocity": "-gasVel
                    "-iterations": "-steps", "-ends": "-ends", "-segmentLength": "-length",
                    "-template": "-template", "-release": "-release", "-drag": "-drag",
                    "-stop": "-stop", "-density": "-density", "-gasTemperature": "-gasTemperature",
-                   "-gasPressure": "-gasPressure", "-diameters": "-diameter"}
+                   "-gasPressure": "-gasPressure", "-diameters": "-diameter", "-startFrom": "-startFrom"}
 BOX_ONLY = {"-spillRate": "every flight's spill rate comes from the flight model (mesh/flights.csv)",
             "-fallHeight": "every flight's fall height comes from the flight model (mesh/flights.csv)",
             "-heights": "each curtain falls to the bed, measured where it lands",

@@ -12,7 +12,8 @@ from ..errors import InputError
 TOOL = "drumSegmentCase"
 FLAGS = {"-meshOnly", "-check"}
 VALUED = {"-dict", "-out", "-level", "-ends", "-gasVelocity", "-reposeAngle", "-length", "-np", "-steps",
-          "-template", "-release", "-drag", "-stop", "-density", "-diameter", "-gasTemperature", "-gasPressure"}
+          "-template", "-release", "-drag", "-stop", "-density", "-diameter", "-gasTemperature", "-gasPressure",
+          "-startFrom"}
 NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
 
 
@@ -24,7 +25,7 @@ def parse(argv, usage):
          "length": "1.133", "np": "1", "steps": "", "template": os.path.join(PROJECT, "etc", "templates",
                                                                             "curtain", "drumSegment"),
          "release": "", "drag": "SchillerNaumann", "stop": "", "density": "", "diameter": "", "gasTemperature": "",
-         "gasPressure": "", "meshOnly": False, "check": False}
+         "gasPressure": "", "startFrom": "", "meshOnly": False, "check": False}
     i = 0
     while i < len(argv):
         a = argv[i]
@@ -104,6 +105,10 @@ def check(o):
     if o["density"]:
         rho_gas = float(o["gas"][0]) if o["gas"] else 1.0
         in_range("-density", o["density"], 10 * rho_gas, 25000)
+    if o["startFrom"]:
+        if int(o["np"]) > 1:
+            raise InputError("-startFrom needs -np 1 (the source's fields are read onto the whole mesh)")
+        o["startFrom"] = os.path.abspath(o["startFrom"])
     laws = facts.drag_laws()
     if o["drag"] not in laws:
         raise InputError("-drag '%s' is not one of %s" % (o["drag"], " ".join(laws)))
@@ -141,6 +146,9 @@ def signature(o):
     for k in ("density", "diameter", "gasTemperature", "gasPressure"):
         if o[k]:
             text += "%s=%s\n" % (k, o[k])
+    if o["startFrom"]:
+        # the source's folder name (a sweep plans it before the source has run)
+        text += "startFrom=%s\n" % os.path.basename(o["startFrom"])
     text += "%s  -\n" % _sha1_file(o["dict"])
     files = []
     for root, _, names in os.walk(o["template"]):

@@ -196,6 +196,8 @@ def read_segment_sweep(d):
                                warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
         except gas.GasError as e:
             raise InputError("%s: entries 'gasTemperature', 'gasPressure': %s" % (d.where("gasTemperature"), e))
+    # each segment of a repose angle from the one at the gas velocity before it
+    s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
     s["grid"] = {"reposeAngle": d.scalar_list("grid/reposeAngle", 20, 70, "deg", lo_closed=True),
                  "gasVelocity": d.scalar_list("grid/gasVelocity", 0.05, 10, "m/s", lo_closed=True)}
     outputs(d, s, "segmentTable.csv")

@@ -41,6 +41,11 @@ def segment_cases(s):
         if os.path.realpath(s["template"]) != os.path.realpath(os.path.join(PROJECT, SEGMENT_TEMPLATE)):
             args += ["-template", s["template"]]
         out.append({"name": "phi%s_Vg%s" % (g6(phi), g6(V)), "phi": phi, "V": V, "args": args})
+    if s.get("warmStart"):
+        for chain in chains_of(s, out):
+            for a, b in zip(chain, chain[1:]):
+                b["args"] = b["args"] + ["-startFrom", case_dir(s, a)]
+                b["parent"] = a["name"]
     return out
 
 
@@ -73,6 +78,13 @@ def chains_of(s, cases):
     and down in turn (neighbours on the grid). Fixed by the plan, so the local pool,
     -jobs N and Slurm start every run from the same fields. A list of chains, each a
     list of the cases in order."""
+    if s["scene"] == "drumSegment":
+        # a repose angle's segments release from the same flights: one chain, the gas
+        # velocities in turn (the mesh is the section's, the same for every run)
+        chains = {}
+        for c in cases:
+            chains.setdefault(c["phi"], []).append(c)
+        return [sorted(chains[k], key=lambda c: c["V"]) for k in sorted(chains)]
     groups = {}
     for c in cases:
         key = (c["L"], c["rho"], c["floor"]) + ((c["S"],) if s.get("layerThickness") == "packed" else ())

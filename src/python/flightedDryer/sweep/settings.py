@@ -29,7 +29,7 @@ GRID_KEYS = GRID_ENTRIES
 # flight's curtain at once; the table is writeSegmentTable's
 SEGMENT_TOP_KEYS = ("FoamFile", "scene", "flights", "template", "level", "iterations", "ends",
                     "segmentLength", "drag", "stop", "grid", "output", "work", "particleDensity", "diameter",
-                    "gasTemperature", "gasPressure")
+                    "gasTemperature", "gasPressure", "warmStart")
 SEGMENT_GRID_KEYS = ("reposeAngle", "gasVelocity")
 SCENES = ("box", "drumSegment")
 

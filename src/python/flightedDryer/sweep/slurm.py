@@ -232,7 +232,7 @@ def run_slurm(s, cases, todo, np_, sched, opts):
     atomic_write(os.path.join(d, "submission.json"), json.dumps(sub) + "\n")
     say("submitted %d case(s) as Slurm job array %s%s, collect step %s (after it); follow with "
         "buildDriftTable -status -work %s; cancel with scancel %s %s"
-        % (len(todo), array, " (%d warm-start chains)" % len(sub["indices"]) if s.get("warmStart") else "",
+        % (len(todo), array, " (%d warm-start chain(s))" % len(sub["indices"]) if s.get("warmStart") else "",
            gather, s["work"], array, gather))
     if opts.get("-noWait"):
         return sub

@@ -211,8 +211,10 @@ def write_table(s, cases, ok, failed, elapsed, out):
     header.append(["drift_m", "mass-weighted mean displacement along the gas flow of the part of the class "
                    "crossing that fall height inside the domain; captured_fraction: that part's share of "
                    "the class's slot flux (below 1: the rest left by the outlet first and went further)"])
-    header.append(["iterations", "%s ; converged: drift steady to 1 %%, V_c/V_g to 5 %% (curtainCase)"
-                   % ",".join(sorted(iterations, key=_number))])
+    header.append(["iterations", "%s ; converged: drift steady to 1 %%, V_c/V_g to 5 %% (curtainCase)%s"
+                   % (",".join(sorted(iterations, key=_number)),
+                      " ; warm start: each run of a mesh from the fields of the one before it (warmStart yes)"
+                      if s.get("warmStart") else "")])
     header.append(["drift_bound", "where drift is undefined (captured_fraction below 1e-3, %d rows) the class left "
                    "the domain before that height and drift_m is the distance from the slot centre to the outlet, "
                    "a lower bound" % n_bound])

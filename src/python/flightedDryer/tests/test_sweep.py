@@ -141,3 +141,18 @@ def test_warm_start_with_a_packed_layer_chains_only_one_spill(tmp_path):
     chains = plan.chains_of(s, plan.cases_of(s))
     # the packed layer's thickness follows the spill rate: another mesh per spill
     assert [[c["name"].split("_L")[0] for c in ch] for ch in chains] == [["V1_S2", "V3_S2"], ["V1_S5", "V3_S5"]]
+
+
+def test_warm_segments_chain_by_repose_angle(tmp_path):
+    p = tmp_path / "segDict"
+    p.write_text(HEAD + 'scene drumSegment;\nflights "etc/defaults/driftTables/invictaSegment.yaml";\n'
+                 "warmStart yes;\ngrid { reposeAngle (36 48); gasVelocity (0.75 1.25); }\n"
+                 "work \"%s\";\n" % (tmp_path / "work"))
+    s = read_sweep(str(p))
+    cases = plan.cases_of(s)
+    chains = plan.chains_of(s, cases)
+    assert [[c["name"] for c in ch] for ch in chains] == [["phi36_Vg0.75", "phi36_Vg1.25"],
+                                                          ["phi48_Vg0.75", "phi48_Vg1.25"]]
+    second = chains[0][1]
+    assert second["args"][second["args"].index("-startFrom") + 1] == plan.case_dir(s, chains[0][0])
+    assert "-startFrom" not in chains[1][0]["args"] and "-keep" not in second["args"]
