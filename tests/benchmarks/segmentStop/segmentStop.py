@@ -2,6 +2,7 @@
 
   python3 segmentStop.py WORK RESULTS     (the fixed sweep of ./run in WORK/fixed)
   python3 segmentStop.py -replay CASE     (one run: the replayed stop, for checking)
+  python3 segmentStop.py -warm WORK RESULTS   (the warm-started statistical sweep in WORK/warm)
 
 A statistical stop changes nothing before it: the run that stops at step N is the
 fixed run up to N. So each fixed run (900 steps, the means of the last 300: the
@@ -216,10 +217,60 @@ def main(work, out):
     files.save_figure(fig, os.path.join(out, "segmentStop.png"), 100)
 
 
+def warm(work, out):
+    """WORK/warm: the statistical sweep with warmStart (a repose angle's second segment
+    from the first's fields): per segment its steps, curtainFoam's CPU and every mean
+    against the fixed run's band (WORK/fixed); RESULTS/warmSegments.csv."""
+    base, fixed_base = os.path.join(work, "warm"), os.path.join(work, "fixed")
+    cases = sorted(d for d in os.listdir(base) if os.path.isfile(os.path.join(base, d, "curtains.csv")))
+    if not cases:
+        raise SystemExit("segmentStop: no finished segment in %s" % base)
+    rows = []
+    for c in cases:
+        run, frun = os.path.join(base, c), os.path.join(fixed_base, c)
+        with open(os.path.join(run, "curtains.csv"), newline="") as f:
+            means = {r["curtain"]: r for r in csv.DictReader(f)}
+        with open(os.path.join(frun, "curtains.csv"), newline="") as f:
+            fixed = {r["curtain"]: r for r in csv.DictReader(f)}
+        fcase = os.path.join(frun, "case")
+        flast = max(int(d) for d in os.listdir(fcase) if d.isdigit())
+        fwindow = int(fixed["section"]["window_steps"])
+        steps = max(int(d) for d in os.listdir(os.path.join(run, "case")) if d.isdigit())
+        _, cpu = cpu_at(run, None)
+        _, fcpu = cpu_at(frun, None)
+        inside = n = 0
+        for name in fixed:
+            for q, fo, key in (("vc_over_vg", "gasInCurtain", "VcByVg" if name == "section" else "VcByVg_" + name),
+                               ("drift_m", "drift", "drift_bulk" if name == "section" else "drift_" + name)):
+                _, lo, hi = window_stats(fcase, fo, key, flast - fwindow, flast)
+                v = float(means[name][q])
+                if not math.isfinite(v):
+                    raise SystemExit("segmentStop: %s/curtains.csv: %s %s is not a number" % (run, name, q))
+                inside += lo <= v <= hi
+                n += 1
+        with open(os.path.join(base, c + ".log"), errors="replace") as f:
+            src = next((re.search(r"warm start from \S+/(\S+) ", l).group(1) for l in f if "warm start from" in l), "-")
+        rows.append({"case": c, "from": src, "steps": steps, "cpu_s": cpu, "fixed_cpu_s": fcpu,
+                     "window_steps": int(means["section"]["window_steps"]), "means_inside_band": inside, "means": n})
+    total = {"case": "total", "from": "", "steps": sum(r["steps"] for r in rows), "cpu_s": sum(r["cpu_s"] for r in rows),
+             "fixed_cpu_s": sum(r["fixed_cpu_s"] for r in rows), "window_steps": "",
+             "means_inside_band": sum(r["means_inside_band"] for r in rows), "means": sum(r["means"] for r in rows)}
+    cols = ["case", "from", "steps", "cpu_s", "fixed_cpu_s", "cpu_ratio", "window_steps", "means_inside_band", "means"]
+    text = "# regenerate: WARM=1 tests/benchmarks/segmentStop/run\n" + ",".join(cols) + "\n"
+    for r in rows + [total]:
+        r["cpu_ratio"] = "%.3f" % (r["cpu_s"] / r["fixed_cpu_s"])
+        r["cpu_s"], r["fixed_cpu_s"] = "%.1f" % r["cpu_s"], "%.1f" % r["fixed_cpu_s"]
+        text += ",".join(str(r[k]) for k in cols) + "\n"
+    files.atomic_write(os.path.join(out, "warmSegments.csv"), text)
+    print(text, end="")
+
+
 if __name__ == "__main__":
     if len(sys.argv) == 3 and sys.argv[1] == "-replay":
         stop, start, kept, stats = replay(sys.argv[2])
         print("stop %s, window from %s, %s batches, %s" % (stop, start, kept, stats))
+    elif len(sys.argv) == 4 and sys.argv[1] == "-warm":
+        warm(sys.argv[2], sys.argv[3])
     elif len(sys.argv) == 3:
         main(sys.argv[1], sys.argv[2])
     else:

@@ -12,7 +12,8 @@ import subprocess
 import time
 
 from ..errors import Diverged, RunError
-from ..foamTimes import drop_times_after, last_time_in_log, latest_time, times
+from ..foamTimes import drop_times_after, last_time_in_log, latest_time
+from ..warmStart import source_time
 from ..messages import time_or_none
 from ..processes import write_lock_info
 from . import dictionaries as fd
@@ -178,26 +179,13 @@ def prepare(children, s, part, lock_fd):
     return count_cells(part), s["end"], None
 
 
-MESH_FILES = ("points", "faces", "owner", "neighbour", "boundary")
-
-
 def warm_start(s, part):
     """-startFrom: the source's last time folder named in constant/curtainProperties
     (startFields, read by curtainFoam at time 0), after checking that the source is
     a finished run kept with its mesh and that its mesh is this one, file by file."""
-    src = os.path.join(s["startFromDir"], "case")
     if not os.path.isfile(os.path.join(s["startFromDir"], ARGS)):
         raise RunError("-startFrom %s: not a finished curtainCase run (no %s)" % (s["startFromDir"], ARGS))
-    last = latest_time(src, 1) if os.path.isdir(src) else None
-    if not last or not os.path.isdir(os.path.join(src, "constant", "polyMesh")):
-        raise RunError("-startFrom %s: no fields and mesh kept (run it with -keep)" % s["startFromDir"])
-    for f in MESH_FILES:
-        a, b = (os.path.join(c, "constant", "polyMesh", f) for c in (src, part))
-        with open(a, "rb") as fa, open(b, "rb") as fb:
-            if fa.read() != fb.read():
-                raise RunError("-startFrom %s: its mesh is not this run's (constant/polyMesh/%s differs): a "
-                               "warm start needs the same mesh" % (s["startFromDir"], f))
-    t = os.path.join(src, next(d for v, d in times(src) if v == last))
+    t, last = source_time(s["startFromDir"], part, " (run it with -keep)")
     set_entry(os.path.join(part, "constant", "curtainProperties"), "startFields", '{ dir "%s"; }' % t)
     say("warm start from %s (its fields at iteration %g; steady check from iteration %d)"
         % (s["startFromDir"], last, WARM_CHECK_FROM * s["window"]))

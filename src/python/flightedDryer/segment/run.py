@@ -14,6 +14,7 @@ import sys
 
 from .. import PROJECT, foamDictionary as fd
 from ..errors import InputError, RunError
+from ..warmStart import source_time
 from .inputs import TOOL
 
 PLATE = "0.02"     # m, flight plate thickness
@@ -169,28 +170,15 @@ def statistics_window(case):
                        last, window, batches, mean[0], se[0], mean[1], se[1]))
 
 
-MESH_FILES = ("points", "faces", "owner", "neighbour", "boundary")
-
-
 def warm_source(o, case):
     """-startFrom: the last time folder of a finished segment run on the same mesh
     (compared file by file), whose fields curtainFoam reads at time 0 (startFields);
     every class of this run must be one of that run's (the same releasing flights)."""
-    src = os.path.join(o["startFrom"], "case")
     if not os.path.isfile(os.path.join(o["startFrom"], ".drumSegmentCase")):
         raise RunError("-startFrom %s: not a finished drumSegmentCase run" % o["startFrom"])
-    times = [d for d in os.listdir(src) if re.fullmatch(r"[0-9]+", d) and d != "0"] if os.path.isdir(src) else []
-    if not times or not os.path.isdir(os.path.join(src, "constant", "polyMesh")):
-        raise RunError("-startFrom %s: no fields and mesh kept" % o["startFrom"])
-    for f in MESH_FILES:
-        a, b = (os.path.join(c, "constant", "polyMesh", f) for c in (src, case))
-        with open(a, "rb") as fa, open(b, "rb") as fb:
-            if fa.read() != fb.read():
-                raise RunError("-startFrom %s: its mesh is not this run's (constant/polyMesh/%s differs): a warm "
-                               "start needs the same mesh" % (o["startFrom"], f))
-    last = max(times, key=int)
-    print("   warm start from %s (its fields at step %s)" % (o["startFrom"], last), flush=True)
-    return os.path.join(src, last)
+    t, last = source_time(o["startFrom"], case)
+    print("   warm start from %s (its fields at step %g)" % (o["startFrom"], last), flush=True)
+    return t
 
 
 def curtains(o, run, R, steps, say):
