@@ -250,15 +250,20 @@ def warm(work, out):
                 n += 1
         with open(os.path.join(base, c + ".log"), errors="replace") as f:
             src = next((re.search(r"warm start from \S+/(\S+) ", l).group(1) for l in f if "warm start from" in l), "-")
-        rows.append({"case": c, "from": src, "steps": steps, "cpu_s": cpu, "fixed_cpu_s": fcpu,
+        rows.append({"case": c, "from": src, "steps": steps, "fixed_steps": flast, "cpu_s": cpu, "fixed_cpu_s": fcpu,
                      "window_steps": int(means["section"]["window_steps"]), "means_inside_band": inside, "means": n})
-    total = {"case": "total", "from": "", "steps": sum(r["steps"] for r in rows), "cpu_s": sum(r["cpu_s"] for r in rows),
+    total = {"case": "total", "from": "", "steps": sum(r["steps"] for r in rows),
+             "fixed_steps": sum(r["fixed_steps"] for r in rows), "cpu_s": sum(r["cpu_s"] for r in rows),
              "fixed_cpu_s": sum(r["fixed_cpu_s"] for r in rows), "window_steps": "",
              "means_inside_band": sum(r["means_inside_band"] for r in rows), "means": sum(r["means"] for r in rows)}
-    cols = ["case", "from", "steps", "cpu_s", "fixed_cpu_s", "cpu_ratio", "window_steps", "means_inside_band", "means"]
+    # (the fixed runs' CPU was measured in another sweep, on a machine under another load:
+    # the steps' ratio is the side-by-side measure)
+    cols = ["case", "from", "steps", "fixed_steps", "steps_ratio", "cpu_s", "fixed_cpu_s", "cpu_ratio", "window_steps",
+            "means_inside_band", "means"]
     text = "# regenerate: WARM=1 tests/benchmarks/segmentStop/run\n" + ",".join(cols) + "\n"
     for r in rows + [total]:
         r["cpu_ratio"] = "%.3f" % (r["cpu_s"] / r["fixed_cpu_s"])
+        r["steps_ratio"] = "%.3f" % (r["steps"] / r["fixed_steps"])
         r["cpu_s"], r["fixed_cpu_s"] = "%.1f" % r["cpu_s"], "%.1f" % r["fixed_cpu_s"]
         text += ",".join(str(r[k]) for k in cols) + "\n"
     files.atomic_write(os.path.join(out, "warmSegments.csv"), text)
