@@ -12,9 +12,14 @@ constexpr double gravity = 9.81;
 //- Standard atmosphere [kPa]: the pressure of Sherritt's air
 constexpr double standardPressureKPa = 101.325;
 
-//- The pressures [kPa] the tools accept for a gas (airProperties, windTunnelDrift)
+//- The pressures [kPa] the tools accept for a gas (airProperties, windTunnelDrift,
+//  the drum model, the curtain tools through dryerFacts)
 constexpr double minPressureKPa = 10;
 constexpr double maxPressureKPa = 1000;
+
+//- The temperatures [degC] the tools accept for a gas (the same tools)
+constexpr double minTemperatureC = -50;
+constexpr double maxTemperatureC = 1500;
 
 //- Air density [kg/m3]: rho = 354.3/(T_C + 273.15) at 1 atm, T_C in degC,
 //  in proportion to the pressure p [kPa] (ideal gas)

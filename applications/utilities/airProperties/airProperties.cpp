@@ -59,7 +59,8 @@ int main(int argc, char* argv[])
             std::fputs(usage, stderr);
             return 2;
         }
-        if (isT ? !readNumber("-temperature", argv[i + 1], -50, 1500, "degC", t)
+        if (isT ? !readNumber("-temperature", argv[i + 1], particleDrag::minTemperatureC,
+                              particleDrag::maxTemperatureC, "degC", t)
                 : !readNumber("-pressure", argv[i + 1], particleDrag::minPressureKPa,
                               particleDrag::maxPressureKPa, "kPa", p))
         {

@@ -11,6 +11,7 @@
 // Exit 2 on bad options.
 #include "drum/drift/driftTableFile.hpp"
 #include "particleDrag/dragLaw.hpp"
+#include "particleDrag/gasProperties.hpp"
 #include "particleDrag/releaseLayer.hpp"
 #include "particleDrag/sheetVelocity.hpp"
 
@@ -83,7 +84,11 @@ int main(int argc, char* argv[])
     std::printf("  \"driftTableColumns\": %s,\n", list(drum::driftTableColumns()).c_str());
     std::printf("  \"tunnelDriftColumn\": %s,\n", quoted(drum::tunnelDriftColumn()).c_str());
     std::printf("  \"maxSpillRate\": %.17g,\n", particleDrag::maxSpillRate);
-    std::printf("  \"curtainEdgeSolidsFraction\": %.17g\n", particleDrag::curtainEdgeSolidsFraction);
+    std::printf("  \"curtainEdgeSolidsFraction\": %.17g,\n", particleDrag::curtainEdgeSolidsFraction);
+    std::printf("  \"gasTemperatureRangeC\": [%.17g, %.17g],\n", particleDrag::minTemperatureC,
+                particleDrag::maxTemperatureC);
+    std::printf("  \"gasPressureRangeKPa\": [%.17g, %.17g]\n", particleDrag::minPressureKPa,
+                particleDrag::maxPressureKPa);
     std::printf("}\n");
     return 0;
 }

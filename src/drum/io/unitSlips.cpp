@@ -1,5 +1,7 @@
 #include "drum/io/unitSlips.hpp"
 
+#include "particleDrag/gasProperties.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -21,7 +23,7 @@ const std::vector<UnitSlipRule>& drumDictUnitSlipRules()
          "below 0.1 um, finer than any dryer's solids"},
         {"material.sizes_um", "um", 0.1, 10, "mm", 1e3, 0,
          "below 10 um, a dust rather than a dryer's feed"},
-        {"gas.temperature_C", "degC", 273.0, 1500.0, "K", 1, -273.15,
+        {"gas.temperature_C", "degC", 273.0, particleDrag::maxTemperatureC, "K", 1, -273.15,
          "a whole number of degrees plus 273.15, the mark of a temperature in kelvin", true},
     };
     return rules;

@@ -1,5 +1,6 @@
 #include "drum/models/drumCase.hpp"
 #include "drum/io/unitSlips.hpp"
+#include "particleDrag/gasProperties.hpp"
 
 #include "drum/drift/porousSheetDrift.hpp"
 #include "drum/io/inputError.hpp"
@@ -233,7 +234,8 @@ DrumCase readDrumCase(const std::filesystem::path& caseDir, const std::vector<st
     r.only(g, "gas", {"flow", "massRate", "temperature_C", "pressure_kPa"});
     c.gas.counterCurrent = r.word(g, "gas", "flow", {"coCurrent", "counterCurrent"}, std::string("counterCurrent")) == "counterCurrent";
     c.gas.massRate = r.number(g, "gas", "massRate", 0, 1e4, 0.0);
-    c.gas.temperatureC = r.number(g, "gas", "temperature_C", -50, 1500, 20.0);
+    c.gas.temperatureC = r.number(g, "gas", "temperature_C", particleDrag::minTemperatureC,
+                                  particleDrag::maxTemperatureC, 20.0);
     c.gas.pressureKPa = r.number(g, "gas", "pressure_kPa", particleDrag::minPressureKPa,
                                  particleDrag::maxPressureKPa, particleDrag::standardPressureKPa);
 

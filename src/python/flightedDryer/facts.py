@@ -57,6 +57,18 @@ def curtain_edge_solids_fraction():
     return float(_facts()["curtainEdgeSolidsFraction"])
 
 
+def gas_temperature_range():
+    """(least, largest) gas temperature, degC, the tools accept (particleDrag::minTemperatureC,
+    maxTemperatureC)."""
+    return tuple(float(x) for x in _facts()["gasTemperatureRangeC"])
+
+
+def gas_pressure_range():
+    """(least, largest) gas pressure, kPa, the tools accept (particleDrag::minPressureKPa,
+    maxPressureKPa)."""
+    return tuple(float(x) for x in _facts()["gasPressureRangeKPa"])
+
+
 def slot_solids_fraction(spill, rho_p, thickness, velocity):
     """Solids fraction at the slot, S/(rho_p b v) (particleDrag::slotSolidsFraction,
     Lee 2008 Eq 5.4): spill kg/(m s), rho_p kg/m3, thickness m, velocity m/s."""

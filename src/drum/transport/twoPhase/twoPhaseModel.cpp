@@ -5,6 +5,7 @@
 
 #include "drum/io/inputError.hpp"
 #include "drum/numerics/constants.hpp"
+#include "particleDrag/gasProperties.hpp"
 #include "particleDrag/loneParticleFall.hpp"
 
 #include <algorithm>
@@ -134,7 +135,8 @@ TwoPhaseModel::TwoPhaseModel(TwoPhaseCase c)
     }
     const auto& gas = case_.gas;
     requireInRange(gas.massRate, 0.0, 1e4, "gas.massRate", file);
-    requireInRange(gas.temperatureC, -50.0, 1500.0, "gas.temperature_C", file);
+    requireInRange(gas.temperatureC, particleDrag::minTemperatureC, particleDrag::maxTemperatureC,
+                   "gas.temperature_C", file);
     requireInRange(gas.pressureKPa, particleDrag::minPressureKPa, particleDrag::maxPressureKPa, "gas.pressure_kPa", file);
     const particleDrag::Gas air = particleDrag::Gas::air(gas.temperatureC, gas.pressureKPa);
     gasDensity_ = air.density;

@@ -13,7 +13,7 @@ from .settings import (DEFAULT_TEMPLATE, GAS_MODELS, LEVELS, MAX_LAYER, MIN_FALL
                        MIN_SECTION_CELLS, PACKED_SLOT_FRACTION, PARTICLE_PARTICLE_DRAG, PARTICLE_TURBULENCE,
                        TURBULENT_DISPERSION, say)
 from .setUp import level_entries, round_up
-from ..facts import drag_laws, max_spill_rate, slot_solids_fraction
+from ..facts import drag_laws, gas_pressure_range, gas_temperature_range, max_spill_rate, slot_solids_fraction
 
 
 def air_properties(t, p=None):
@@ -58,10 +58,10 @@ def check_inputs(opts):
         if fd.has(os.path.join(s["template"], "constant", "transportProperties"), "rho") else 1.2
     if "-gasTemperature" in opts or "-gasPressure" in opts:
         # keys only when given: the inputs' signature of other runs is unchanged
-        s["gasTemperature"] = number(opts, "-gasTemperature", -50, 1500, "degC", lo_open=False) \
+        s["gasTemperature"] = number(opts, "-gasTemperature", *gas_temperature_range(), "degC", lo_open=False) \
             if "-gasTemperature" in opts else 20.0
         if "-gasPressure" in opts:
-            s["gasPressure"] = number(opts, "-gasPressure", 10, 1000, "kPa", lo_open=False)
+            s["gasPressure"] = number(opts, "-gasPressure", *gas_pressure_range(), "kPa", lo_open=False)
         s["gasRho"], s["gasNu"] = air_properties(s["gasTemperature"], s.get("gasPressure"))
         rho_gas = float(s["gasRho"])
 

@@ -89,9 +89,9 @@ def check(o):
     # the material and the gas (default: the template's caseParameters and
     # transportProperties, the Invicta crystal in air at 80 degC)
     if o["gasTemperature"]:
-        in_range("-gasTemperature", o["gasTemperature"], -50, 1500)
+        in_range("-gasTemperature", o["gasTemperature"], *facts.gas_temperature_range())
     if o["gasPressure"]:
-        in_range("-gasPressure", o["gasPressure"], 10, 1000)
+        in_range("-gasPressure", o["gasPressure"], *facts.gas_pressure_range())
     o["gas"] = None
     if o["gasTemperature"] or o["gasPressure"]:
         try:

@@ -59,13 +59,14 @@ def read_sweep(dict_path):
         s["wakeShare"] = d.scalar("wakeShare", 0, 1)
     s["gasTemperature"] = None
     if d.has("gasTemperature"):
-        s["gasTemperature"] = d.scalar("gasTemperature", -50, 1500, "degC")
+        s["gasTemperature"] = d.scalar("gasTemperature", *facts.gas_temperature_range(), units="degC")
         try:
             gas.air_properties(s["gasTemperature"], entry="gasTemperature",
                                warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
         except gas.GasError as e:
             raise InputError("%s: entry 'gasTemperature': %s" % (d.where("gasTemperature"), e))
-    s["gasPressure"] = d.scalar("gasPressure", 10, 1000, "kPa") if d.has("gasPressure") else None
+    s["gasPressure"] = d.scalar("gasPressure", *facts.gas_pressure_range(), units="kPa") \
+        if d.has("gasPressure") else None
     s["boxWidth"] = d.scalar("boxWidth", 0, 20, "m") if d.has("boxWidth") else None
     # each run of a mesh from its neighbour's fields (plan.chains_of), or from still gas
     s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
@@ -187,8 +188,10 @@ def read_segment_sweep(d):
     # the particles and the gas (default: the template's: the Invicta crystal in air at 80 degC)
     s["particleDensity"] = d.scalar("particleDensity", 10, 25000, "kg/m3") if d.has("particleDensity") else None
     s["diameter"] = d.scalar("diameter", 1e-6, 0.05, "m") if d.has("diameter") else None
-    s["gasTemperature"] = d.scalar("gasTemperature", -50, 1500, "degC") if d.has("gasTemperature") else None
-    s["gasPressure"] = d.scalar("gasPressure", 10, 1000, "kPa") if d.has("gasPressure") else None
+    s["gasTemperature"] = d.scalar("gasTemperature", *facts.gas_temperature_range(), units="degC") \
+        if d.has("gasTemperature") else None
+    s["gasPressure"] = d.scalar("gasPressure", *facts.gas_pressure_range(), units="kPa") \
+        if d.has("gasPressure") else None
     if s["gasTemperature"] is not None or s["gasPressure"] is not None:
         try:
             gas.air_properties(20.0 if s["gasTemperature"] is None else s["gasTemperature"], s["gasPressure"],
