@@ -25,6 +25,16 @@ def test_the_facts_come_from_the_cpp_side():
     assert facts.max_spill_rate() > 0
 
 
+def test_the_gas_ranges_are_the_ones_airProperties_holds():
+    for lo_hi, option in ((facts.gas_temperature_range(), "-temperature"), (facts.gas_pressure_range(), "-pressure")):
+        lo, hi = lo_hi
+        assert math.isfinite(lo) and math.isfinite(hi) and lo < hi
+        base = [] if option == "-temperature" else ["-temperature", "20"]
+        for v, ok in ((lo, True), (hi, True), (hi * 1.01 + 1, False)):
+            r = subprocess.run(["airProperties"] + base + [option, "%.17g" % v], capture_output=True, text=True)
+            assert (r.returncode == 0) == ok, (option, v, r.stderr)
+
+
 @pytest.mark.parametrize("args", [(20, 2650, 0.05, 1), (0.3, 1200, 0.008, 0.67), (999, 1590, 0.2, 5)])
 def test_the_slot_fraction_is_the_cpp_one(args):
     r = subprocess.run(["dryerFacts", "-slotSolidsFraction"] + ["%.17g" % a for a in args],
