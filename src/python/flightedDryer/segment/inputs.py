@@ -14,6 +14,10 @@ FLAGS = {"-meshOnly", "-check"}
 VALUED = {"-dict", "-out", "-level", "-ends", "-gasVelocity", "-reposeAngle", "-length", "-np", "-steps",
           "-template", "-release", "-drag", "-stop", "-density", "-diameter", "-gasTemperature", "-gasPressure",
           "-startFrom"}
+# the segment's axes: the dynamic angle of repose (deg) and the mean axial gas
+# velocity (m/s) a segment runs at (also a sweep's grid and a study's plan)
+REPOSE_RANGE = (20.0, 70.0)
+GAS_VELOCITY_RANGE = (0.05, 10.0)
 NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
 
 
@@ -63,9 +67,9 @@ def check(o):
     if o["ends"] not in ("periodic", "open"):
         raise InputError("-ends '%s': periodic or open" % o["ends"])
     if o["gasVelocity"]:
-        in_range("-gasVelocity", o["gasVelocity"], 0.05, 10)
+        in_range("-gasVelocity", o["gasVelocity"], *GAS_VELOCITY_RANGE)
     if o["reposeAngle"]:
-        in_range("-reposeAngle", o["reposeAngle"], 20, 70)
+        in_range("-reposeAngle", o["reposeAngle"], *REPOSE_RANGE)
     in_range("-length", o["length"], 0.1, 100)
     if not o["np"].isdigit():
         raise InputError("-np '%s': a whole number in [1, 64]" % o["np"])

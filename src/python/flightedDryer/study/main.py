@@ -87,6 +87,19 @@ def _record_plan(info, g, study, out):
     _write_plan(info, out)
 
 
+def _stop_at_plan(info, study, opts, out):
+    """The exit status when the study stops at its plan (-plan: 0; a sweep above
+    study.confirmAbove_s without -yes: 3), else None."""
+    if opts.get("-plan"):
+        say("-plan: nothing swept; the plan is in %s" % os.path.join(out, "plan.json"))
+        return 0
+    if info["estimate_s"] > study["confirmAbove_s"] and not opts.get("-yes"):
+        say("the sweep would take about %.0f s of CPU, above study.confirmAbove_s %g s: give -yes to run it"
+            % (info["estimate_s"], study["confirmAbove_s"]))
+        return 3
+    return None
+
+
 def _segments(desc, study, q, info, out, opts, jobs, children):
     """The drum-segment scene: the flight dictionary from the description, the
     grid from the drum model's repose angles and gas velocities, the plan and its
@@ -104,13 +117,9 @@ def _segments(desc, study, q, info, out, opts, jobs, children):
     say("plan: %d drum segments (repose %s deg x V_g %s m/s; %d cells each, a level bed %.3g m deep: the drum "
         "model's kilning bed at x = %g m), about %.0f s of CPU"
         % (info["runs"], g["reposeAngle"], g["gasVelocity"], cells, bed, x, info["estimate_s"]))
-    if opts.get("-plan"):
-        say("-plan: nothing swept; the plan is in %s" % os.path.join(out, "plan.json"))
-        return None, 0, None
-    if info["estimate_s"] > study["confirmAbove_s"] and not opts.get("-yes"):
-        say("the sweep would take about %.0f s of CPU, above study.confirmAbove_s %g s: give -yes to run it"
-            % (info["estimate_s"], study["confirmAbove_s"]))
-        return None, 3, None
+    stop = _stop_at_plan(info, study, opts, out)
+    if stop is not None:
+        return None, stop, None
     table, wall = _sweep(lambda t: segment.sweep_dict(g, desc, study, flights, t, plan.gas_temperature(desc)),
                          "segmentTable.csv", out, int(jobs), opts, children)
     # the segment route asks what the Eq 142 pass asked (the repose angles are the
@@ -183,13 +192,9 @@ def run(opts, children):
         _record_plan(info, g, study, out)
         say("plan: %d curtain runs (V_g %s m/s x spill %s kg/(m s) x floors %s m), about %.0f s of CPU"
             % (info["runs"], g["gasVelocity"], g["spillRate"], g["floors"], info["estimate_s"]))
-        if opts.get("-plan"):
-            say("-plan: nothing swept; the plan is in %s" % os.path.join(out, "plan.json"))
-            return 0
-        if info["estimate_s"] > study["confirmAbove_s"] and not opts.get("-yes"):
-            say("the sweep would take about %.0f s of CPU, above study.confirmAbove_s %g s: give -yes to run it"
-                % (info["estimate_s"], study["confirmAbove_s"]))
-            return 3
+        stop = _stop_at_plan(info, study, opts, out)
+        if stop is not None:
+            return stop
         # the table's own routes may ask beyond what the Eq 142 pass asked (the drum
         # model's state follows its drift): each is run on the table (clamped,
         # recorded), and the grid widened and swept again until it covers them

@@ -17,14 +17,12 @@ from .. import PROJECT, foamDictionary
 from ..errors import InputError, RunError
 from ..files import atomic_write
 from ..processes import run_tied
+from ..segment.inputs import GAS_VELOCITY_RANGE, REPOSE_RANGE
 
 TEMPLATE = os.path.join(PROJECT, "etc", "templates", "curtain", "drumSegment")
 # the repose-angle nodes lie at most this far apart (deg): the hand-made Invicta
 # segment table's spacing (etc/defaults/driftTables/invictaSegmentDict)
 REPOSE_STEP = 12.0
-# drumSegmentCase's ranges of the two axes
-REPOSE_RANGE = (20.0, 70.0)
-GAS_RANGE = (0.05, 10.0)
 # CPU per cell and local step, and the steps a statistical stop takes, measured
 # on the Invicta segments (tests/benchmarks/segmentStop/results/summary.csv; the
 # cells from the shipped table's header)
@@ -130,10 +128,10 @@ def grid(q, study):
                          "runs, [%g, %g] deg" % (plo, phi, REPOSE_RANGE[0], REPOSE_RANGE[1]))
     m = study["margin"]
     vlo, vhi = q["gas_velocity_m_s"]
-    gas = sorted({float("%.3g" % v) for v in (max(GAS_RANGE[0], vlo / (1 + m)), min(GAS_RANGE[1], vhi * (1 + m)))})
-    if vlo < GAS_RANGE[0] or vhi > GAS_RANGE[1]:
+    gas = sorted({float("%.3g" % v) for v in (max(GAS_VELOCITY_RANGE[0], vlo / (1 + m)), min(GAS_VELOCITY_RANGE[1], vhi * (1 + m)))})
+    if vlo < GAS_VELOCITY_RANGE[0] or vhi > GAS_VELOCITY_RANGE[1]:
         raise InputError("the drum model's gas velocities %.4g-%.4g m/s lie outside what a drum segment runs, "
-                         "[%g, %g] m/s" % (vlo, vhi, GAS_RANGE[0], GAS_RANGE[1]))
+                         "[%g, %g] m/s" % (vlo, vhi, GAS_VELOCITY_RANGE[0], GAS_VELOCITY_RANGE[1]))
     return {"reposeAngle": [float("%.4g" % v) for v in _nodes(lo, hi, REPOSE_STEP)], "gasVelocity": gas}
 
 

@@ -10,6 +10,7 @@ from .. import PROJECT, facts, gas
 from ..errors import InputError
 from ..messages import g6
 from ..strictDict import StrictDict, check_allowed
+from ..segment.inputs import GAS_VELOCITY_RANGE, REPOSE_RANGE
 from .settings import (DEFAULT_TEMPLATE, GRID_KEYS, SCENES, SEGMENT_GRID_KEYS, SEGMENT_TEMPLATE,
                        SEGMENT_TOP_KEYS, TOP_KEYS, axes, say)
 
@@ -35,6 +36,23 @@ def outputs(d, s, default_output):
             "work", os.path.join("run", "driftTable", os.path.basename(d.path)))))
 
 
+def read_gas(d, s):
+    """gasTemperature (degC) and gasPressure (kPa) into s (None when not given), in the
+    tools' ranges, the air at them asked of airProperties (a temperature that looks
+    like kelvin warned, naming the entry)."""
+    s["gasTemperature"] = d.scalar("gasTemperature", *facts.gas_temperature_range(), units="degC") \
+        if d.has("gasTemperature") else None
+    s["gasPressure"] = d.scalar("gasPressure", *facts.gas_pressure_range(), units="kPa") \
+        if d.has("gasPressure") else None
+    if s["gasTemperature"] is not None or s["gasPressure"] is not None:
+        where = d.where("gasTemperature" if s["gasTemperature"] is not None else "gasPressure")
+        try:
+            gas.air_properties(20.0 if s["gasTemperature"] is None else s["gasTemperature"], s["gasPressure"],
+                               entry="gasTemperature", warn=lambda w: say("warning: %s: %s" % (where, w)))
+        except gas.GasError as e:
+            raise InputError("%s: entries 'gasTemperature', 'gasPressure': %s" % (where, e))
+
+
 def read_sweep(dict_path):
     """The sweep's settings (a dict) from its dictionary; InputError naming the
     file, line and entry on anything not allowed."""
@@ -57,16 +75,7 @@ def read_sweep(dict_path):
             raise InputError("%s: entry 'wakeShare' belongs to particleTurbulence SimoninCrowe (here %s)"
                             % (d.where("wakeShare"), s["particleTurbulence"]))
         s["wakeShare"] = d.scalar("wakeShare", 0, 1)
-    s["gasTemperature"] = None
-    if d.has("gasTemperature"):
-        s["gasTemperature"] = d.scalar("gasTemperature", *facts.gas_temperature_range(), units="degC")
-        try:
-            gas.air_properties(s["gasTemperature"], entry="gasTemperature",
-                               warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
-        except gas.GasError as e:
-            raise InputError("%s: entry 'gasTemperature': %s" % (d.where("gasTemperature"), e))
-    s["gasPressure"] = d.scalar("gasPressure", *facts.gas_pressure_range(), units="kPa") \
-        if d.has("gasPressure") else None
+    read_gas(d, s)
     s["boxWidth"] = d.scalar("boxWidth", 0, 20, "m") if d.has("boxWidth") else None
     # each run of a mesh from its neighbour's fields (plan.chains_of), or from still gas
     s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
@@ -188,21 +197,11 @@ def read_segment_sweep(d):
     # the particles and the gas (default: the template's: the Invicta crystal in air at 80 degC)
     s["particleDensity"] = d.scalar("particleDensity", 10, 25000, "kg/m3") if d.has("particleDensity") else None
     s["diameter"] = d.scalar("diameter", 1e-6, 0.05, "m") if d.has("diameter") else None
-    s["gasTemperature"] = d.scalar("gasTemperature", *facts.gas_temperature_range(), units="degC") \
-        if d.has("gasTemperature") else None
-    s["gasPressure"] = d.scalar("gasPressure", *facts.gas_pressure_range(), units="kPa") \
-        if d.has("gasPressure") else None
-    if s["gasTemperature"] is not None or s["gasPressure"] is not None:
-        try:
-            gas.air_properties(20.0 if s["gasTemperature"] is None else s["gasTemperature"], s["gasPressure"],
-                               entry="gasTemperature",
-                               warn=lambda w: say("warning: %s: %s" % (d.where("gasTemperature"), w)))
-        except gas.GasError as e:
-            raise InputError("%s: entries 'gasTemperature', 'gasPressure': %s" % (d.where("gasTemperature"), e))
+    read_gas(d, s)
     # each segment of a repose angle from the one at the gas velocity before it
     s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
-    s["grid"] = {"reposeAngle": d.scalar_list("grid/reposeAngle", 20, 70, "deg", lo_closed=True),
-                 "gasVelocity": d.scalar_list("grid/gasVelocity", 0.05, 10, "m/s", lo_closed=True)}
+    s["grid"] = {"reposeAngle": d.scalar_list("grid/reposeAngle", *REPOSE_RANGE, "deg", lo_closed=True),
+                 "gasVelocity": d.scalar_list("grid/gasVelocity", *GAS_VELOCITY_RANGE, "m/s", lo_closed=True)}
     outputs(d, s, "segmentTable.csv")
     return s
 

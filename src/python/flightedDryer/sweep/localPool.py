@@ -10,7 +10,7 @@ import time
 
 from ..errors import InputError
 from ..processes import Children
-from .plan import case_args, case_log, chains_of, finished
+from .plan import case_args, case_log, finished, units
 from .settings import case_option_entries, say
 
 
@@ -107,11 +107,7 @@ class Sweep:
 
     def run(self, todo):
         names = {c["name"] for c in todo}
-        if self.s.get("warmStart"):
-            queue = [[c for c in chain if c["name"] in names] for chain in chains_of(self.s, self.cases)]
-            queue = [u for u in queue if u]
-        else:
-            queue = [[c] for c in todo]
+        queue = [u for u in ([c for c in unit if c["name"] in names] for unit in units(self.s, self.cases)) if u]
         active = []
         ended = []
         n_done = 0

@@ -16,9 +16,9 @@ from ..errors import InputError, SchedulerError
 from ..files import WriteError, atomic_write
 from .dictionary import read_sweep
 from .localPool import Sweep, check_cases, tail_reason
-from .plan import case_log, cases_of, finished, grid_key, read_result, run_axes
+from .plan import case_log, cases_of, finished, grid_key, read_result, run_axes, units
 from .settings import say
-from .slurm import print_status, read_submission, run_slurm, slurm_dir, task_reason, unit_of, units, write_slurm
+from .slurm import print_status, read_submission, run_slurm, slurm_dir, task_reason, unit_of, write_slurm
 from .table import write_table
 
 

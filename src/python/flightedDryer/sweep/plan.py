@@ -42,10 +42,8 @@ def segment_cases(s):
             args += ["-template", s["template"]]
         out.append({"name": "phi%s_Vg%s" % (g6(phi), g6(V)), "phi": phi, "V": V, "args": args})
     if s.get("warmStart"):
-        for chain in chains_of(s, out):
-            for a, b in zip(chain, chain[1:]):
-                b["args"] = b["args"] + ["-startFrom", case_dir(s, a)]
-                b["parent"] = a["name"]
+        # (a segment run keeps its fields: no -keep)
+        link_chains(s, out, keep=False)
     return out
 
 
@@ -62,13 +60,25 @@ def cases_of(s):
                                                    g["particleDensity"])
              for Y in s["floors"]]
     if s.get("warmStart"):
-        for chain in chains_of(s, cases):
-            for a, b in zip(chain, chain[1:]):
-                # a keeps its fields for b, which starts from them
-                a["args"] = a["args"] + ["-keep"]
-                b["args"] = b["args"] + ["-startFrom", case_dir(s, a)]
-                b["parent"] = a["name"]
+        link_chains(s, cases, keep=True)
     return cases
+
+
+def link_chains(s, cases, keep):
+    """warmStart: each run of a chain starts from the one before it (-startFrom its
+    folder), which keeps its fields for it (-keep) where a run would drop them."""
+    for chain in chains_of(s, cases):
+        for a, b in zip(chain, chain[1:]):
+            if keep:
+                a["args"] = a["args"] + ["-keep"]
+            b["args"] = b["args"] + ["-startFrom", case_dir(s, a)]
+            b["parent"] = a["name"]
+
+
+def units(s, cases):
+    """What one worker runs in order: a warm-start chain (warmStart), else one case;
+    the local pool's jobs and the Slurm array's tasks."""
+    return chains_of(s, cases) if s.get("warmStart") else [[c] for c in cases]
 
 
 def chains_of(s, cases):

@@ -13,7 +13,7 @@ from .. import PROJECT
 from ..errors import SchedulerError
 from ..files import atomic_write
 from .localPool import curtain_reason, log_lines
-from .plan import case_args, chains_of, finished
+from .plan import case_args, finished, units
 from .settings import ARGS, RESULT, SLURM_POLL, say
 
 
@@ -21,23 +21,16 @@ def slurm_dir(s):
     return os.path.join(s["work"], "slurm")
 
 
-def units(s, cases):
-    """The array's tasks: lists of case indices run in order by one task (warmStart:
-    a chain, each run from the one before; otherwise one case a task, the task
-    index the case's)."""
+def task_cases(s, cases):
+    """The array's tasks: lists of case indices run in order by one task (plan.units:
+    a warm-start chain, or one case a task, the task index the case's)."""
     index = {c["name"]: i for i, c in enumerate(cases)}
-    if s.get("warmStart"):
-        return [[index[c["name"]] for c in chain] for chain in chains_of(s, cases)]
-    return [[i] for i in range(len(cases))]
+    return [[index[c["name"]] for c in unit] for unit in units(s, cases)]
 
 
 def unit_of(s, cases):
     """{case name: its task's index}."""
-    out = {}
-    for u, unit in enumerate(units(s, cases)):
-        for i in unit:
-            out[cases[i]["name"]] = u
-    return out
+    return {c["name"]: u for u, unit in enumerate(units(s, cases)) for c in unit}
 
 
 def write_slurm(s, cases, todo, np_, sched):
@@ -50,7 +43,7 @@ def write_slurm(s, cases, todo, np_, sched):
     atomic_write(lst, "".join(" ".join(_quote(a) for a in ["curtainCase"] + case_args(s, c, np_)) + "\n"
                               for c in cases))
     tasks = os.path.join(d, "tasks.txt")
-    atomic_write(tasks, "".join(" ".join(str(i + 1) for i in unit) + "\n" for unit in units(s, cases)))
+    atomic_write(tasks, "".join(" ".join(str(i + 1) for i in unit) + "\n" for unit in task_cases(s, cases)))
     u = unit_of(s, cases)
     array = array_spec(sorted({u[c["name"]] for c in todo}))
     script = os.path.join(d, "driftTable.sbatch")

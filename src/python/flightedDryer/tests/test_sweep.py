@@ -128,7 +128,7 @@ def test_warm_start_chains_are_the_plans(tmp_path):
     # without warmStart: a task per case, no chain arguments
     cold = plan.cases_of(sweep(tmp_path))
     assert all("-startFrom" not in c["args"] and "-keep" not in c["args"] for c in cold)
-    assert slurm.units(sweep(tmp_path), cold) == [[i] for i in range(len(cold))]
+    assert slurm.task_cases(sweep(tmp_path), cold) == [[i] for i in range(len(cold))]
 
 
 def test_warm_start_with_a_packed_layer_chains_only_one_spill(tmp_path):
