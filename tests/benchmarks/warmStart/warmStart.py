@@ -8,6 +8,7 @@ warm.time (user s, system s, start, end of each sweep). Writes RESULTS/summary.c
 RESULTS/cases.csv, RESULTS/columns.csv and RESULTS/warmStart.png."""
 import csv
 import json
+import math
 import os
 import sys
 
@@ -25,8 +26,8 @@ def solver_cpu(case):
         for line in f:
             if line.startswith("ExecutionTime = "):
                 t = float(line.split()[2])
-    if t is None:
-        raise SystemExit("warmStart: no ExecutionTime in %s/log.curtainFoam" % case)
+    if t is None or not math.isfinite(t):
+        raise SystemExit("warmStart: no finite ExecutionTime in %s/log.curtainFoam" % case)
     return t
 
 

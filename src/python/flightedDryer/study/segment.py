@@ -214,14 +214,26 @@ def cpu_estimate_s(g, cells, study):
     shipped_cells = [int(c) for c in re.findall(r"(\d+) cells", head)]
     if not rows or not shipped_cells:
         raise RunError("%s or %s: no measured segment cost" % (STOP_BENCHMARK, SHIPPED_SEGMENT))
-    per_cell_step = sum(float(r["fixed_cpu_s"]) / float(r["fixed_steps"]) for r in rows) / len(rows) \
+    def num(r, col):
+        try:
+            v = float(r[col])
+        except (KeyError, TypeError, ValueError):
+            v = float("nan")
+        if not math.isfinite(v):
+            raise RunError("%s: %s = '%s' of %s is not a number" % (STOP_BENCHMARK, col, r.get(col), r.get("case")))
+        return v
+    per_cell_step = sum(num(r, "fixed_cpu_s") / num(r, "fixed_steps") for r in rows) / len(rows) \
         / (sum(shipped_cells) / len(shipped_cells))
-    steps = sum(float(r["statistical_steps"]) for r in rows) / len(rows)
+    steps = sum(num(r, "statistical_steps") for r in rows) / len(rows)
     cap = float(foamDictionary.value(os.path.join(TEMPLATE, "system", "controlDict"), "endTime"))
     if study["level"] != "coarse":
         cap *= 2          # drumSegmentCase: twice the steps at the finer levels
     steps = min(steps * cap / 900.0, cap if study["iterations"] is None else study["iterations"])
-    return runs(g) * (RUN_OVERHEAD_S + per_cell_step * cells * steps)
+    estimate = runs(g) * (RUN_OVERHEAD_S + per_cell_step * cells * steps)
+    if not (math.isfinite(estimate) and estimate > 0):
+        raise RunError("%s, %s: the measured segment cost gives an estimate of %s s" % (STOP_BENCHMARK, SHIPPED_SEGMENT,
+                                                                                   estimate))
+    return estimate
 
 
 def picture(work, g, out):
