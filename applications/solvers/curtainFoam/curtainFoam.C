@@ -22,8 +22,10 @@ Description
     particle volume so it stays well posed where alpha -> 0; drag is
     implicit in both phases through a partial elimination; the slot region
     (alpha ~ 0.1-0.2) is guarded by alphaMax. Solids transport: implicit
-    upwind, or (MULESCorr in the alpha.* solver dictionary) upwind plus a
-    MULES-limited higher-order correction (bounded, conservative).
+    upwind, or (in the alpha.* solver dictionary) upwind plus a higher-order
+    correction: deferredCorr (the previous iteration's difference to the
+    div(phi,alpha) flux; its steady answer does not depend on the local
+    step) or MULESCorr (MULES-limited; bounded at every step).
 
     Gas sources from constant/fvOptions (OpenFOAM's fvOptions on U.<gas>,
     e.g. meanVelocityForce driving a periodic segment at its mean axial
@@ -62,6 +64,8 @@ Description
 #include <cmath>
 
 #include "readStartField.H"
+#include "faceReconstruction.H"
+#include "startUp.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -136,10 +140,26 @@ int main(int argc, char *argv[])
             #include "UEqns.H"
             UEqnsProf.stop();
 
+            // the start-up phase's extra pressure corrections (startUp.H)
+            const startUpPhase startUp
+            (
+                LTS
+              ? readStartUp(pimple.dict(), runTime.timeIndex() - 1)
+              : startUpPhase()
+            );
+            const label extraCorrections
+            (
+                startUp.active
+              ? max(startUp.nCorrectors - pimple.dict().getOrDefault<label>("nCorrectors", 1), label(0))
+              : label(0)
+            );
             while (pimple.correct())
             {
                 addProfiling(pEqn, "curtainFoam::pressure");
-                #include "pEqn.H"
+                for (label extra = 0; extra <= extraCorrections; ++extra)
+                {
+                    #include "pEqn.H"
+                }
             }
 
             profilingTrigger UpProf("curtainFoam::solidsMomentum");

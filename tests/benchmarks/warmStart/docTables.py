@@ -7,35 +7,42 @@ SUMMARY = "tests/benchmarks/warmStart/results/summary.csv"
 COLUMNS = "tests/benchmarks/warmStart/results/columns.csv"
 
 
+TABLES = {"cold": "from still gas, against the earlier settings",
+          "warm": "warm start, against the earlier settings",
+          "warm_vs_cold": "warm start, against from still gas"}
+NAMES = {"earlier": "earlier settings, from still gas", "cold": "from still gas", "warm": "warm start"}
+
+
 def sweeps(results):
-    """Cold against warm: CPU, wall time, iterations."""
-    out = ["| sweep | runs (warm-started) | CPU [s] | of it curtainFoam [s] | wall [s] | iterations: total, per run | CPU / cold | curtainFoam CPU / cold |",
+    """The three sweeps: CPU, wall time, iterations, and CPU against the earlier settings' sweep."""
+    out = ["| sweep | runs (warm-started) | CPU [s] | of it curtainFoam [s] | wall [s] | iterations: total, per run | CPU / earlier | curtainFoam CPU / earlier |",
            "|---|---|---|---|---|---|---|---|"]
     rows = results.rows(SUMMARY)
-    if len(rows) != 2:
-        raise df.FigureError("%s: not the two sweeps" % SUMMARY)
+    if [r["sweep"] for r in rows] != list(NAMES):
+        raise df.FigureError("%s: not the sweeps %s" % (SUMMARY, ", ".join(NAMES)))
     for r in rows:
         v = lambda c: df.finite(r[c], SUMMARY)
         out.append("| %s | %s (%s) | %s | %s | %s | %s, %s–%s | %s | %s |"
-                   % ("from still gas" if r["sweep"] == "cold" else "warm start", r["runs"], r["warm_started"],
+                   % (NAMES[r["sweep"]], r["runs"], r["warm_started"],
                       df.fmt(v("cpu_s"), "%.0f"), df.fmt(v("solver_cpu_s"), "%.0f"), df.fmt(v("wall_s"), "%.0f"),
                       df.fmt(v("iterations_total"), "%.0f"), df.fmt(v("iterations_min"), "%.0f"),
-                      df.fmt(v("iterations_max"), "%.0f"), df.fmt(v("cpu_over_cold"), "%.2f"),
-                      df.fmt(v("solver_cpu_over_cold"), "%.2f")))
+                      df.fmt(v("iterations_max"), "%.0f"), df.fmt(v("cpu_over_earlier"), "%.2f"),
+                      df.fmt(v("solver_cpu_over_earlier"), "%.2f")))
     return "\n".join(out)
 
 
 def columns(results):
-    """The largest difference per table column, against the steady criterion."""
-    out = ["| column | largest difference | relative | rows outside the criterion | criterion |",
-           "|---|---|---|---|---|"]
+    """The largest difference per table column against the earlier table, and the rows outside
+    the steady criterion."""
+    out = ["| table | column | largest difference | relative | rows outside the criterion | criterion |",
+           "|---|---|---|---|---|---|"]
     rows = results.rows(COLUMNS)
-    if not rows:
-        raise df.FigureError("%s: no rows" % COLUMNS)
+    if not rows or any(r["table"] not in TABLES for r in rows):
+        raise df.FigureError("%s: no rows, or a table other than %s" % (COLUMNS, ", ".join(TABLES)))
     for r in rows:
         v = lambda c: df.finite(r[c], COLUMNS)
-        out.append("| `%s` | %s | %s %% | %s of %s | %s %% or %s |"
-                   % (r["column"], df.fmt(v("max_abs_diff"), "%.3g"), df.fmt(100 * v("max_rel_diff"), "%.2f"),
-                      r["outside"], r["rows"], df.fmt(100 * v("rel_tolerance"), "%g"),
-                      df.fmt(v("abs_tolerance"), "%g")))
+        out.append("| %s | `%s` | %s | %s %% | %s of %s | %s %% or %s |"
+                   % (TABLES[r["table"]], r["column"], df.fmt(v("max_abs_diff"), "%.3g"),
+                      df.fmt(100 * v("max_rel_diff"), "%.2f"), r["outside"], r["rows"],
+                      df.fmt(100 * v("rel_tolerance"), "%g"), df.fmt(v("abs_tolerance"), "%g")))
     return "\n".join(out)

@@ -1,11 +1,14 @@
-"""warmStart: the cold and the warm-started sweep of ./run side by side.
+"""warmStart: the sweeps of ./run side by side: from still gas with the template's
+earlier solver settings (the reference), from still gas, and warm-started.
 
-  python3 warmStart.py WORK RESULTS
+  python3 warmStart.py WORK RESULTS [SHIPPED]
 
-WORK holds cold.csv, warm.csv (the two tables), cold/ and warm/ (their runs,
-each with curtainCase.args.json: iterations, cells, wall time) and cold.time,
-warm.time (user s, system s, start, end of each sweep). Writes RESULTS/summary.csv,
-RESULTS/cases.csv, RESULTS/columns.csv and RESULTS/warmStart.png."""
+WORK holds earlier.csv, cold.csv, warm.csv (the tables), earlier/, cold/ and warm/
+(their runs, each with curtainCase.args.json: iterations, cells, wall time) and
+earlier.time, cold.time, warm.time (user s, system s, start, end of each sweep).
+Writes RESULTS/summary.csv, RESULTS/cases.csv, RESULTS/columns.csv (each table
+against the earlier one) and RESULTS/warmStart.png. With SHIPPED (the table the
+dictionary names), summary.csv says whether the earlier sweep's rows are its rows."""
 import csv
 import json
 import math
@@ -17,6 +20,9 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "src", "python"))
 from flightedDryer import files  # noqa: E402
 from flightedDryer.sweep.compare import compare, read_rows  # noqa: E402
+
+
+MODES = ("earlier", "cold", "warm")
 
 
 def solver_cpu(case):
@@ -54,75 +60,93 @@ def g(v):
     return "%.6g" % v if isinstance(v, float) else str(v)
 
 
-def main(work, results):
+def data_rows(path):
+    with open(path) as f:
+        return [line for line in f if not line.startswith("#")]
+
+
+def main(work, results, shipped=None):
     os.makedirs(results, exist_ok=True)
     sweeps = {}
-    for mode in ("cold", "warm"):
+    for mode in MODES:
         with open(os.path.join(work, mode + ".time")) as f:
             user, sys_, t0, t1 = (float(x) for x in f.read().split())
         r = runs(os.path.join(work, mode))
         sweeps[mode] = {"cpu": user + sys_, "wall": t1 - t0, "runs": r}
-    cold, warm = sweeps["cold"], sweeps["warm"]
-    if set(cold["runs"]) != set(warm["runs"]):
-        raise SystemExit("warmStart: the sweeps ran other cases")
+    ref = sweeps["earlier"]
+    for mode in MODES:
+        if set(sweeps[mode]["runs"]) != set(ref["runs"]):
+            raise SystemExit("warmStart: the %s sweep ran other cases than the earlier one" % mode)
+    ref_solver = sum(v[3] for v in ref["runs"].values())
     summary = []
-    for mode in ("cold", "warm"):
+    for mode in MODES:
         s = sweeps[mode]
         its = [v[0] for v in s["runs"].values()]
         solver = sum(v[3] for v in s["runs"].values())
-        cold_solver = sum(v[3] for v in cold["runs"].values())
         summary.append({"sweep": mode, "runs": len(its), "warm_started": sum(v[2] for v in s["runs"].values()),
                         "cpu_s": s["cpu"], "solver_cpu_s": solver, "wall_s": s["wall"], "iterations_total": sum(its),
                         "iterations_min": min(its), "iterations_max": max(its),
-                        "cpu_over_cold": s["cpu"] / cold["cpu"], "solver_cpu_over_cold": solver / cold_solver})
+                        "cpu_over_earlier": s["cpu"] / ref["cpu"], "solver_cpu_over_earlier": solver / ref_solver,
+                        "rows_as_shipped": ("" if shipped is None else "yes" if data_rows(os.path.join(work, mode + ".csv"))
+                                            == data_rows(shipped) else "no")})
     files.atomic_write(os.path.join(results, "summary.csv"),
                        "# regenerate: tests/benchmarks/warmStart/run (2 cores)\n" + csv_text(
                            ["sweep", "runs", "warm_started", "cpu_s", "solver_cpu_s", "wall_s", "iterations_total",
-                            "iterations_min", "iterations_max", "cpu_over_cold", "solver_cpu_over_cold"], summary, g))
-    cases = [{"case": n, "cold_iterations": cold["runs"][n][0], "warm_iterations": warm["runs"][n][0],
-              "cold_wall_s": cold["runs"][n][1], "warm_wall_s": warm["runs"][n][1],
-              "cold_solver_cpu_s": cold["runs"][n][3], "warm_solver_cpu_s": warm["runs"][n][3],
-              "warm_started": "yes" if warm["runs"][n][2] else "no"} for n in sorted(cold["runs"])]
-    files.atomic_write(os.path.join(results, "cases.csv"), csv_text(
-        ["case", "cold_iterations", "warm_iterations", "cold_wall_s", "warm_wall_s", "cold_solver_cpu_s",
-         "warm_solver_cpu_s", "warm_started"], cases, g))
-    cmp = compare(os.path.join(work, "cold.csv"), os.path.join(work, "warm.csv"))
-    cols = ["column", "rows", "outside", "max_abs_diff", "max_rel_diff", "worst_row", "rel_tolerance",
+                            "iterations_min", "iterations_max", "cpu_over_earlier", "solver_cpu_over_earlier",
+                            "rows_as_shipped"],
+                           summary, g))
+    cases = [dict([("case", n)]
+                  + [("%s_iterations" % m, sweeps[m]["runs"][n][0]) for m in MODES]
+                  + [("%s_solver_cpu_s" % m, sweeps[m]["runs"][n][3]) for m in MODES]
+                  + [("warm_started", "yes" if sweeps["warm"]["runs"][n][2] else "no")])
+             for n in sorted(ref["runs"])]
+    files.atomic_write(os.path.join(results, "cases.csv"), csv_text(list(cases[0]), cases, g))
+    cols = ["table", "column", "rows", "outside", "max_abs_diff", "max_rel_diff", "worst_row", "rel_tolerance",
             "abs_tolerance"]
-    files.atomic_write(os.path.join(results, "columns.csv"), csv_text(cols, list(cmp.values()), g))
-    figure(cases, os.path.join(work, "cold.csv"), os.path.join(work, "warm.csv"),
-           os.path.join(results, "warmStart.png"), summary)
+    cmp_rows = []
+    for table, ref_name, name in (("cold", "earlier", "cold"), ("warm", "earlier", "warm"),
+                                  ("warm_vs_cold", "cold", "warm")):
+        for c in compare(os.path.join(work, ref_name + ".csv"), os.path.join(work, name + ".csv")).values():
+            cmp_rows.append(dict(c, table=table))
+    files.atomic_write(os.path.join(results, "columns.csv"), csv_text(cols, cmp_rows, g))
+    figure(cases, work, os.path.join(results, "warmStart.png"), summary)
     for r in summary:
-        print("%s: %d runs, CPU %.0f s, wall %.0f s, iterations %d-%d (CPU %.2f of cold)"
+        print("%s: %d runs, CPU %.0f s, wall %.0f s, iterations %d-%d (CPU %.2f of the earlier sweep)%s"
               % (r["sweep"], r["runs"], r["cpu_s"], r["wall_s"], r["iterations_min"], r["iterations_max"],
-                 r["cpu_over_cold"]))
-    for c in cmp.values():
-        print("%s: largest difference %.3g (%.2f %%), %d of %d rows outside the steady criterion"
-              % (c["column"], c["max_abs_diff"], 100 * c["max_rel_diff"], c["outside"], c["rows"]))
+                 r["cpu_over_earlier"], "; the shipped table's rows: " + r["rows_as_shipped"]
+                 if r["rows_as_shipped"] else ""))
+    for c in cmp_rows:
+        print("%s, %s: largest difference %.3g (%.2f %%), %d of %d rows outside the steady criterion"
+              % (c["table"], c["column"], c["max_abs_diff"], 100 * c["max_rel_diff"], c["outside"], c["rows"]))
 
 
-def figure(cases, cold_csv, warm_csv, out, summary):
+def figure(cases, work, out, summary):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axs = plt.subplots(1, 3, figsize=(16, 4.8))
     x = range(len(cases))
-    axs[0].bar([i - 0.2 for i in x], [c["cold_iterations"] for c in cases], 0.4, label="from still gas")
-    axs[0].bar([i + 0.2 for i in x], [c["warm_iterations"] for c in cases], 0.4, label="from a neighbour")
+    labels = {"earlier": "earlier settings, still gas", "cold": "from still gas", "warm": "from a neighbour"}
+    for k, m in enumerate(MODES):
+        axs[0].bar([i + 0.27 * (k - 1) for i in x], [c["%s_iterations" % m] for c in cases], 0.27, label=labels[m])
     axs[0].set_xlabel("run (by name)")
     axs[0].set_ylabel("iterations to a steady drift")
-    axs[0].set_title("CPU: warm %.2f of cold" % summary[1]["cpu_over_cold"])
+    by = {r["sweep"]: r for r in summary}
+    axs[0].set_title("CPU of the earlier sweep: %.2f from still gas, %.2f warm"
+                     % (by["cold"]["cpu_over_earlier"], by["warm"]["cpu_over_earlier"]))
     axs[0].legend(fontsize=8)
-    a, b = read_rows(cold_csv), read_rows(warm_csv)
+    ref = read_rows(os.path.join(work, "earlier.csv"))
     for ax, col, label in ((axs[1], "drift_m", "drift [m]"), (axs[2], "vc_over_vg", "V_c/V_g")):
-        xs = [float(a[k][col]) for k in sorted(a)]
-        ys = [float(b[k][col]) for k in sorted(a)]
-        ax.plot(xs, ys, ".", ms=4)
-        lo, hi = min(xs + ys), max(xs + ys)
+        xs = [float(ref[k][col]) for k in sorted(ref)]
+        for m in ("cold", "warm"):
+            b = read_rows(os.path.join(work, m + ".csv"))
+            ax.plot(xs, [float(b[k][col]) for k in sorted(ref)], ".", ms=4, label=labels[m])
+        lo, hi = min(xs), max(xs)
         ax.plot([lo, hi], [lo, hi], "k-", lw=0.8)
-        ax.set_xlabel("%s, from still gas" % label)
-        ax.set_ylabel("%s, warm-started" % label)
+        ax.set_xlabel("%s, earlier settings" % label)
+        ax.set_ylabel("%s, current settings" % label)
         ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
         if col == "drift_m":
             ax.set_xscale("log")
             ax.set_yscale("log")
@@ -131,6 +155,6 @@ def figure(cases, cold_csv, warm_csv, out, summary):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         raise SystemExit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    main(*sys.argv[1:])

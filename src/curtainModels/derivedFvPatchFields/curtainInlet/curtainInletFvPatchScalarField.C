@@ -168,15 +168,21 @@ void Foam::curtainInletFvPatchScalarField::checkResolution()
     const scalar nCells = extent[across]/widest[across];
 
     // What is resolved enough depends on the solids transport (windTunnel
-    // mesh study, 2/4/8 cells across the half sheet): with the MULES-limited
-    // higher-order correction 2 cells are within 2.5 % of 8; with implicit
-    // upwind alone 2 cells over-predict by about 30 % and 1 by about 2x
+    // mesh study, 2/4/8 cells across the half sheet): with a higher-order
+    // correction (MULESCorr or deferredCorr) 2 cells are within 2.5 % of 8;
+    // with implicit upwind alone 2 cells over-predict by about 30 % and 1 by
+    // about 2x
     const fvMesh& mesh = patch().boundaryMesh().mesh();
     const dictionary& solvers = mesh.solutionDict().subOrEmptyDict("solvers");
-    const bool mules =
+    const dictionary alphaControls
+    (
         solvers.found(internalField().name())
-     && solvers.subDict(internalField().name())
-           .getOrDefault<Switch>("MULESCorr", false);
+      ? solvers.subDict(internalField().name())
+      : dictionary::null
+    );
+    const bool mules =
+        alphaControls.getOrDefault<Switch>("MULESCorr", false)
+     || alphaControls.getOrDefault<Switch>("deferredCorr", false);
     const scalar needed = mules ? 2 : 4;
     if (nCells < needed - 1e-6)
     {
@@ -188,11 +194,12 @@ void Foam::curtainInletFvPatchScalarField::checkResolution()
             << (
                    mules
                  ? "over-predicted (2 cells across a half sheet are within "
-                   "2.5 % of 8 with MULESCorr; fewer were not measured). "
+                   "2.5 % of 8 with a higher-order correction, MULESCorr or "
+                   "deferredCorr; fewer were not measured). "
                    "Use 2 or more."
                  : "over-predicted (about +30 % at 2 cells across a half "
                    "sheet, about 2x at 1 cell, with upwind solids transport; "
-                   "MULESCorr needs 2). Use 4 or more."
+                   "MULESCorr or deferredCorr needs 2). Use 4 or more."
                )
             << endl;
     }

@@ -77,12 +77,20 @@ def solve(children, s, case, lock_fd, end):
         elif lines:
             tail = lines[-1]
         good = latest_time(case, s["np"])
-        raise (Diverged if "diverged" in tail else RunError)(
+        raise (Diverged if diverging(tail) else RunError)(
             "curtainFoam failed (exit %d) at iteration %s; last good time on disk: %s; "
             "log: %s%s" % (p.returncode, last_time_in_log(log), time_or_none(good), log,
                            ("; " + tail) if tail else ""))
     t = last_time_in_log(log)
     return int(round(float(t))) if t is not None else None
+
+
+def diverging(cause):
+    """Is curtainFoam's stated cause of a stop a diverging iteration (worth a
+    gentler second stage), rather than an input it refuses? Its own field check
+    (checkFields.H) stops a NaN or Inf and a gas too fast ("the iteration
+    diverges"); the floating-point trap is named here ("the solution diverged")."""
+    return any(k in cause for k in ("diverged", "diverges", "NaN or Inf"))
 
 
 def stopped_steady(case):
