@@ -113,6 +113,13 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         #include "checkCourantLimits.H"
 
+        // this iteration's start-up phase (startUp.H): its Courant number and
+        // smoothing (setRDeltaT.H) and its pressure corrections (below)
+        const startUpPhase startUp
+        (
+            LTS ? readStartUp(pimple.dict(), runTime.timeIndex()) : startUpPhase()
+        );
+
         if (LTS)
         {
             addProfiling(rDeltaT, "curtainFoam::localTimeStep");
@@ -140,13 +147,7 @@ int main(int argc, char *argv[])
             #include "UEqns.H"
             UEqnsProf.stop();
 
-            // the start-up phase's extra pressure corrections (startUp.H)
-            const startUpPhase startUp
-            (
-                LTS
-              ? readStartUp(pimple.dict(), runTime.timeIndex() - 1)
-              : startUpPhase()
-            );
+            // the start-up phase's extra pressure corrections
             const label extraCorrections
             (
                 startUp.active
