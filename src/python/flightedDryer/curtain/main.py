@@ -46,7 +46,7 @@ def main(argv, usage):
         return 2
     except KeyboardInterrupt:
         return 130
-    for tool in ("foamDictionary", "blockMesh", "curtainFoam", "setpriv"):
+    for tool in ("foamDictionaryServer", "blockMesh", "curtainFoam", "setpriv"):
         if shutil.which(tool) is None:
             print("curtainCase: %s not on PATH (source etc/bashrc)" % tool, file=sys.stderr)
             return 2

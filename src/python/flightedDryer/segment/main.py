@@ -53,7 +53,7 @@ def main(argv, usage):
         if os.path.exists(run) and not os.path.isfile(os.path.join(run, ".drumSegmentCase.partial")):
             raise InputError("%s exists and was not made by %s: nothing is replaced (the run is made there)"
                              % (run, TOOL))
-        for tool in ("drumSegmentMesh", "gmshToFoam", "checkMesh", "foamDictionary", "curtainFoam", "gnuplot"):
+        for tool in ("drumSegmentMesh", "gmshToFoam", "checkMesh", "foamDictionaryServer", "curtainFoam", "gnuplot"):
             if shutil.which(tool) is None:
                 raise InputError("%s not on PATH (source etc/bashrc)" % tool)
     except InputError as e:
