@@ -89,7 +89,11 @@ def diverging(cause):
     """Is curtainFoam's stated cause of a stop a diverging iteration (worth a
     gentler second stage), rather than an input it refuses? Its own field check
     (checkFields.H) stops a NaN or Inf and a gas too fast ("the iteration
-    diverges"); the floating-point trap is named here ("the solution diverged")."""
+    diverges"); the floating-point trap is named here ("the solution diverged"); a
+    solver's NaN residual shows as OpenFOAM failing to read it back from the
+    solver-performance data ("expected scalar value, found ... word 'nan'")."""
+    if re.search(r"expected scalar value, found .*word '[-+]?(nan|inf)'", cause, re.IGNORECASE):
+        return True
     return any(k in cause for k in ("diverged", "diverges", "NaN or Inf"))
 
 

@@ -1,6 +1,7 @@
 """The curtain templates that share settings keep them the same: windTunnelMULES is
 the windTunnel template with the shipped box tables' solids transport, and its own
-fvSolution may differ from windTunnel's in that transport and the Courant number only."""
+fvSolution may differ from windTunnel's in that transport, the Courant number and the
+start-up's smoothing only."""
 
 import os
 
@@ -8,7 +9,7 @@ from flightedDryer import PROJECT
 from flightedDryer import foamDictionary as fd
 
 TEMPLATES = os.path.join(PROJECT, "etc", "templates", "curtain")
-MAY_DIFFER = {'solvers/"alpha.*"', "PIMPLE/maxCo", "levelMaxCo"}
+MAY_DIFFER = {'solvers/"alpha.*"', "PIMPLE/maxCo", "levelMaxCo", "PIMPLE/startUp/rDeltaTSmoothingCoeff"}
 
 
 def entries(path, scope=None):
