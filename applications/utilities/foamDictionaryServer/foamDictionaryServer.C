@@ -29,7 +29,8 @@ Description
     into a temporary file beside it that then replaces it: a killed server
     leaves the old file or the new one, never half of one. Errors are answered,
     not fatal: the server ends at the end of its input (the client closing the
-    pipe or dying).
+    pipe or dying); SIGINT, SIGTERM and SIGHUP are ignored, as they are meant
+    for that client.
 
 \*---------------------------------------------------------------------------*/
 
@@ -40,6 +41,7 @@ Description
 #include "IOobject.H"
 #include "OSspecific.H"
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -268,6 +270,13 @@ int main(int argc, char* argv[])
 
     FatalError.throwExceptions();
     FatalIOError.throwExceptions();
+
+    // a signal to the process group (Ctrl-C, a sweep stopping its runs) is for
+    // the tool that started the server: it answers its requests until that
+    // tool closes the pipe, and a request in flight is never cut off
+    std::signal(SIGINT, SIG_IGN);
+    std::signal(SIGTERM, SIG_IGN);
+    std::signal(SIGHUP, SIG_IGN);
 
     // the answers go to a private copy of stdout; what OpenFOAM prints on its
     // own (warnings) is collected per request, as foamDictionary's stdout

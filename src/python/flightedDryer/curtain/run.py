@@ -179,8 +179,12 @@ def prepare(children, s, part, lock_fd):
         say("removing the unfinished run of %s in %s" % ("the same inputs" if same else "other inputs",
                                                         part))
         shutil.rmtree(part)
-    set_up(s, part)
+    # the folder is marked as this tool's (with the inputs it is for) before
+    # anything goes in: a set-up cut short by a signal is then removed and done
+    # again by the next run, not refused as a stranger's folder
+    os.makedirs(part)
     atomic_write(os.path.join(part, INPUTS), sig + "\n")
+    set_up(s, part)
     shutil.copytree(os.path.join(part, "0.orig"), os.path.join(part, "0"))
     run_logged(children, ["blockMesh"], part, "log.blockMesh", "blockMesh", lock_fd)
     if "startFromDir" in s:

@@ -15,8 +15,9 @@ from .settings import (CAPTURED_GATE, DRIFT_ABS_TOL, LANDING_BIN, REL_TOL, VC_AB
 
 
 def copy_template(src, dst):
-    """Only what a case needs: 0.orig, constant (without a mesh), system."""
-    os.makedirs(dst)
+    """Only what a case needs: 0.orig, constant (without a mesh), system, into the
+    folder dst (made if missing)."""
+    os.makedirs(dst, exist_ok=True)
     for d in ("0.orig", "constant", "system"):
         try:
             shutil.copytree(os.path.join(src, d), os.path.join(dst, d),

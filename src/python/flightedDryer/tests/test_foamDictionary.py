@@ -2,6 +2,7 @@
 and a dictionary that is not text refused naming the line."""
 
 import os
+import signal
 import subprocess
 import sys
 
@@ -120,6 +121,9 @@ def test_a_killed_server_is_replaced_and_a_fork_gets_its_own(tmp_path):
     p.write_text("a 1;\n")
     assert foamDictionary.scalar(str(p), "a") == 1
     first = foamDictionary._server.proc
+    for sig in (signal.SIGTERM, signal.SIGINT, signal.SIGHUP):    # meant for its client: ignored
+        first.send_signal(sig)
+    assert foamDictionary.scalar(str(p), "a") == 1 and foamDictionary._server.proc is first
     first.kill()
     first.wait()
     assert foamDictionary.scalar(str(p), "a") == 1          # the next request starts a new one
