@@ -24,6 +24,12 @@ import steadyDrift  # noqa: E402
 SOLVERS = (('curtainFoam', 'curtainFoam'), ('peer', 'twoPhaseEulerFoam'))
 
 
+def run_files(case, solver):
+    """A run's drift history and solver log."""
+    return (os.path.join(case, 'postProcessing/drift/0/curtainDrift.dat'),
+            os.path.join(case, 'log.' + solver))
+
+
 def repeat_cases(run_root, sub):
     """The folders of a solver's repeated runs (SUB.2, SUB.3, ...), in order."""
     found = []
@@ -46,16 +52,14 @@ def main():
     rows, hist = [], {}
     for sub, solver in SOLVERS:
         case = os.path.join(run_root, sub)
-        dat = os.path.join(case, 'postProcessing/drift/0/curtainDrift.dat')
-        log = os.path.join(case, 'log.' + solver)
+        dat, log = run_files(case, solver)
         if not (os.path.exists(dat) and os.path.exists(log)):
             print(f"{solver}: no run in {case}; skipped")
             continue
         s = steadyDrift.analyse(dat, log, 0.01, 'drift_bulk')
         # repeats of the same run (curtainPeer REPEAT): the same iterations and
         # drifts, bit for bit; the CPU and wall times their median
-        repeats = [s] + [steadyDrift.analyse(os.path.join(r, 'postProcessing/drift/0/curtainDrift.dat'),
-                                             os.path.join(r, 'log.' + solver), 0.01, 'drift_bulk')
+        repeats = [s] + [steadyDrift.analyse(*run_files(r, solver), 0.01, 'drift_bulk')
                          for r in repeat_cases(run_root, sub)]
         for r in repeats[1:]:
             if (r['steady_steps'], r['drift'], r['final_time']) != (s['steady_steps'], s['drift'], s['final_time']):
