@@ -120,22 +120,27 @@ def worst_spread(case):
 
 
 def go_gentler(s, case, why):
-    """Half the local-time-step Courant numbers, 4N more iterations from the latest
-    written time (the initial fields if none)."""
+    """Half the local-time-step Courant numbers (the start-up phase's too), 4N more
+    iterations from the latest written time (the initial fields if none)."""
     fvs = os.path.join(case, "system", "fvSolution")
     cd = os.path.join(case, "system", "controlDict")
     co = fd.scalar(fvs, "PIMPLE/maxCo")
     cop = fd.scalar(fvs, "PIMPLE/maxCoParticles")
+    start_co = fd.scalar(fvs, "PIMPLE/startUp/maxCo") if fd.has(fvs, "PIMPLE/startUp/maxCo") else None
     start = latest_time(case, s["np"]) or 0
     gone = drop_times_after(case, s["np"], start)
     if gone:
         say("time folder(s) %s written in part: removed" % " ".join(gone))
     end = round_up(int(round(start)) + 4 * s["iterations"], s["window"])
-    say("%s; going on from iteration %g with half the Courant numbers (maxCo %g -> %g, "
+    say("%s; going on from iteration %g with half the Courant numbers (maxCo %g -> %g, %s"
         "maxCoParticles %g -> %g) up to iteration %d"
-        % (why, start, co, co / 2, cop, cop / 2, end))
+        % (why, start, co, co / 2,
+           "" if start_co is None else "start-up maxCo %g -> %g, " % (start_co, start_co / 2),
+           cop, cop / 2, end))
     set_entry(fvs, "PIMPLE/maxCo", "%.12g" % (co / 2))
     set_entry(fvs, "PIMPLE/maxCoParticles", "%.12g" % (cop / 2))
+    if start_co is not None:
+        set_entry(fvs, "PIMPLE/startUp/maxCo", "%.12g" % (start_co / 2))
     set_entry(cd, "endTime", str(end))
     for c in fd.keywords(cd, "functions/steady/conditions"):
         # judge the window of the gentler run only
