@@ -89,13 +89,14 @@ def main(work, results, shipped=None):
                         "iterations_min": min(its), "iterations_max": max(its),
                         "outside_solver_cpu_per_run_s": (s["cpu"] - solver) / len(its),
                         "cpu_over_earlier": s["cpu"] / ref["cpu"], "solver_cpu_over_earlier": solver / ref_solver,
+                        "solver_ms_per_iteration": 1000 * solver / sum(its),
                         "rows_as_shipped": ("" if shipped is None else "yes" if data_rows(os.path.join(work, mode + ".csv"))
                                             == data_rows(shipped) else "no")})
     files.atomic_write(os.path.join(results, "summary.csv"),
                        "# regenerate: tests/benchmarks/warmStart/run (2 cores)\n" + csv_text(
                            ["sweep", "runs", "warm_started", "cpu_s", "solver_cpu_s", "wall_s", "iterations_total",
                             "iterations_min", "iterations_max", "outside_solver_cpu_per_run_s", "cpu_over_earlier",
-                            "solver_cpu_over_earlier",
+                            "solver_cpu_over_earlier", "solver_ms_per_iteration",
                             "rows_as_shipped"],
                            summary, g))
     cases = [dict([("case", n)]

@@ -132,6 +132,12 @@ def check_inputs(opts):
     s["window"] = max(3, min(50, n // 3))
     s["every"] = max(1, s["window"] // 5)
     s["end"] = round_up(2 * n, s["window"])
+    # the first iteration the steady window may end the run at (default: one
+    # window on, setUp.check_from); at most the first stage's N iterations
+    if "-steadyFrom" in opts:
+        s["steadyFrom"] = int(number(opts, "-steadyFrom", 0, n, "iterations", lo_open=False))
+        if float(opts["-steadyFrom"]) != s["steadyFrom"]:
+            raise InputError("-steadyFrom = %s is not a whole number of iterations" % opts["-steadyFrom"])
     # solids fraction at the slot: spill/(rho b v) below packing
     alpha_slot = slot_solids_fraction(s["spill"], s["rho"], thickness, release)
     if alpha_slot >= alpha_max:

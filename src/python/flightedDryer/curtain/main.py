@@ -21,7 +21,8 @@ VALUED = {"-dir", "-gasVelocity", "-spillRate", "-fallHeight", "-flightLength",
           "-density", "-diameters", "-fractions", "-heights", "-level", "-np",
           "-drag", "-iterations", "-template", "-sphericity", "-particleTurbulence",
           "-turbulentDispersion", "-particleParticleDrag", "-turbulence", "-wakeShare", "-releaseVelocity",
-          "-layerThickness", "-bulkDensity", "-boxWidth", "-gasTemperature", "-gasPressure", "-startFrom"}
+          "-layerThickness", "-bulkDensity", "-boxWidth", "-gasTemperature", "-gasPressure", "-startFrom",
+          "-steadyFrom"}
 REQUIRED = ("-dir", "-gasVelocity", "-spillRate", "-fallHeight", "-flightLength",
             "-density", "-diameters", "-fractions")
 

@@ -20,8 +20,8 @@ from . import dictionaries as fd
 from .dictionaries import set_entry
 from .folders import all_files, atomic_write, install_case, prune, signature
 from .results import count_cells, dat_header_value, landing_text, result_text, window_results
-from .settings import ARGS, INPUTS, LANDING, MANIFEST, RESULT, STAGE, WARM_CHECK_FROM, say
-from .setUp import round_up, set_up
+from .settings import ARGS, INPUTS, LANDING, MANIFEST, RESULT, STAGE, say
+from .setUp import check_from, round_up, set_up
 
 
 def solver_command(s):
@@ -209,7 +209,7 @@ def warm_start(s, part):
     t, last = source_time(s["startFromDir"], part, " (run it with -keep)")
     set_entry(os.path.join(part, "constant", "curtainProperties"), "startFields", '{ dir "%s"; }' % t)
     say("warm start from %s (its fields at iteration %g; steady check from iteration %d)"
-        % (s["startFromDir"], last, WARM_CHECK_FROM * s["window"]))
+        % (s["startFromDir"], last, check_from(s)))
 
 
 def run(children, s, lock_fd, t0):

@@ -11,7 +11,7 @@ from ..errors import InputError, RunError
 from . import dictionaries as fd
 from .dictionaries import set_entry
 from .settings import (CAPTURED_GATE, DRIFT_ABS_TOL, LANDING_BIN, REL_TOL, VC_ABS_TOL, VC_REL_TOL,
-                       WARM_CHECK_FROM)
+                       STEADY_FROM_WINDOWS)
 
 
 def copy_template(src, dst):
@@ -59,9 +59,9 @@ def round_up(n, m):
 
 
 def check_from(s):
-    """The first iteration the steady window may end at: half the iterations from
-    still gas; from a neighbour's fields (-startFrom) WARM_CHECK_FROM windows."""
-    return WARM_CHECK_FROM * s["window"] if "startFrom" in s else s["iterations"] // 2
+    """The first iteration the steady window may end at: -steadyFrom, by default
+    STEADY_FROM_WINDOWS windows (a window's samples all from this run)."""
+    return s["steadyFrom"] if s.get("steadyFrom") is not None else STEADY_FROM_WINDOWS * s["window"]
 
 
 def set_up(s, case):

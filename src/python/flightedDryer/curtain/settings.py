@@ -35,4 +35,4 @@ REL_TOL = 0.01        # "steady to 1 %"
 DRIFT_ABS_TOL = 1e-3  # m
 VC_ABS_TOL = 2e-3
 VC_REL_TOL = 0.05     # V_c/V_g: a curtain at low gas velocity keeps a small unsteadiness
-WARM_CHECK_FROM = 1   # windows: a run from a neighbour's fields may stop from here (still gas: half its iterations)
+STEADY_FROM_WINDOWS = 1   # -steadyFrom default: the steady window may end from one window on

@@ -23,6 +23,8 @@ LAB_DRUM_DIAMETER = 2.0
 # of a coarse curtainFoam run: tutorials/curtain/windTunnel/results/meshStudy.csv
 # (steady_cpu_s over cells x steady_iterations) and the tools' own start-up
 MESH_STUDY = os.path.join(PROJECT, "tutorials", "curtain", "windTunnel", "results", "meshStudy.csv")
+# the Invicta box sweep from still gas: the iterations each run took to its steady stop
+SWEEP_RUNS = os.path.join(PROJECT, "tests", "benchmarks", "warmStart", "results", "cases.csv")
 RUN_OVERHEAD_S = 2.0
 
 
@@ -181,16 +183,18 @@ def runs(g):
 
 def cpu_estimate_s(g, study):
     """The sweep's CPU time: each run's cells (the level's counts, the height scaled
-    to its floor) times the iterations to a steady drift (about half the limit,
-    where the steady check first looks) at the mesh study's cost per cell and
-    iteration, plus a start-up per run."""
+    to its floor) times the iterations to a steady drift (the mean of the Invicta
+    box sweep's runs from still gas, at most the limit) at the mesh study's cost
+    per cell and iteration, plus a start-up per run."""
     with open(MESH_STUDY, newline="") as f:
         coarse = [r for r in csv.DictReader(f) if r["level"] == "coarse"][0]
     k = float(coarse["steady_cpu_s"]) / (float(coarse["cells"]) * float(coarse["steady_iterations"]))
     lv = g["level"]
     per_m = (lv["nxUp"] + lv["nxSlot"] + lv["nxDown"]) * (lv["nzSheet"] + lv["nzOut"]) / g["dy"]
     points = len(g["gasVelocity"]) * len(g["spillRate"])
-    its = study["iterations"] / 2.0
+    with open(SWEEP_RUNS, newline="") as f:
+        taken = [float(r["cold_iterations"]) for r in csv.DictReader(f)]
+    its = min(sum(taken) / len(taken), study["iterations"])
     return points * sum(RUN_OVERHEAD_S + k * per_m * y * its for y in g["floors"])
 
 

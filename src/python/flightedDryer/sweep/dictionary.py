@@ -80,6 +80,8 @@ def read_sweep(dict_path):
     # each run of a mesh from its neighbour's fields (plan.chains_of), or from still gas
     s["warmStart"] = d.word("warmStart", "no", allowed=["yes", "no"]) == "yes"
     s["iterations"] = d.whole("iterations", 9, 100000)
+    # the first iteration a run may be judged steady at (curtainCase -steadyFrom)
+    s["steadyFrom"] = d.whole("steadyFrom", 0, s["iterations"] or 100000)
     s["layerThickness"] = None
     if d.has("layerThickness"):
         # packed or a thickness; curtainCase -check gives each case's final word

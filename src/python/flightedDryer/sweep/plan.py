@@ -132,6 +132,8 @@ def box_case(s, V, S, L, rho, Y):
         args += ["-turbulence", s["turbulence"]]
     if s["iterations"]:
         args += ["-iterations", str(s["iterations"])]
+    if s["steadyFrom"] is not None:
+        args += ["-steadyFrom", str(s["steadyFrom"])]
     if s["gasTemperature"] is not None:
         args += ["-gasTemperature", "%.12g" % s["gasTemperature"]]
     if s["gasPressure"] is not None:

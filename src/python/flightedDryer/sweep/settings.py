@@ -22,7 +22,8 @@ LANDING = "curtainLanding.csv"
 ARGS = "curtainCase.args.json"
 TOP_KEYS = ("FoamFile", "scene", "template", "level", "iterations", "drag", "particleTurbulence", "grid",
             "massFractions", "material", "sizeClasses", "output", "work", "turbulence", "wakeShare",
-            "gasTemperature", "gasPressure", "boxWidth", "layerThickness", "bulkDensity", "floors", "warmStart")
+            "gasTemperature", "gasPressure", "boxWidth", "layerThickness", "bulkDensity", "floors", "warmStart",
+            "steadyFrom")
 GRID_KEYS = GRID_ENTRIES
 # the drum-segment scene (scene drumSegment): one curtainCase -scene drumSegment run
 # (drumSegmentCase) per dynamic angle of repose and gas velocity, every releasing
@@ -51,5 +52,5 @@ def case_option_entries():
         ("grid/fallHeight", "-fallHeight"), ("grid/fallHeight", "-heights"), ("grid/diameter", "-diameters"),
         ("massFractions", "-fractions"), ("level", "-level"), ("drag", "-drag"), ("gasTemperature", "-gasTemperature"),
         ("gasPressure", "-gasPressure"), ("boxWidth", "-boxWidth"), ("layerThickness", "-layerThickness"),
-        ("bulkDensity", "-bulkDensity"), ("iterations", "-iterations"), ("turbulence", "-turbulence"),
+        ("bulkDensity", "-bulkDensity"), ("iterations", "-iterations"), ("steadyFrom", "-steadyFrom"), ("turbulence", "-turbulence"),
         ("particleTurbulence", "-particleTurbulence"), ("wakeShare", "-wakeShare"), ("template", "-template")]

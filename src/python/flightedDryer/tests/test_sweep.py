@@ -48,10 +48,20 @@ def test_the_signature_follows_the_arguments(tmp_path):
     ("floors (3);\n", r"entry 'floors': 3 m is not a fall height of grid/fallHeight"),
     ("gasTemprature 80;\n", r"unknown entry 'gasTemprature' \(did you mean 'gasTemperature'\?\)"),
     ("bulkDensity 900;\n", r"entry 'bulkDensity' belongs to 'layerThickness packed'"),
+    ("iterations 300;\nsteadyFrom 301;\n", r"entry 'steadyFrom' = '301' outside the allowed range \[0, 300\]"),
+    ("steadyFrom 12.5;\n", r"entry 'steadyFrom' = '12.5' outside the allowed range \[0, 100000\] \(a whole number"),
 ])
 def test_bad_sweeps_are_refused_naming_the_entry(tmp_path, extra, match):
     with pytest.raises(InputError, match=match):
         sweep(tmp_path, extra)
+
+
+def test_steady_from_reaches_every_run_of_the_sweep(tmp_path):
+    default = plan.cases_of(sweep(tmp_path))
+    assert all("-steadyFrom" not in c["args"] for c in default)      # curtainCase's default
+    given = plan.cases_of(sweep(tmp_path, "iterations 300;\nsteadyFrom 150;\n"))
+    assert all(c["args"][c["args"].index("-steadyFrom") + 1] == "150" for c in given)
+    assert plan.grid_key(default) != plan.grid_key(given)             # another sweep's runs
 
 
 def finish(s, c, argv=None, inputs="sig"):
