@@ -1,7 +1,7 @@
 """The curtain templates that share settings keep them the same: windTunnelMULES is
 the windTunnel template with the shipped box tables' solids transport, and its own
 fvSolution may differ from windTunnel's in that transport, the Courant number (the
-start-up's too), the start-up's smoothing and the momentum systems' relative tolerance
+start-up's too), the steps' smoothing and the momentum systems' relative tolerance
 only."""
 
 import os
@@ -10,7 +10,7 @@ from flightedDryer import PROJECT
 from flightedDryer import foamDictionary as fd
 
 TEMPLATES = os.path.join(PROJECT, "etc", "templates", "curtain")
-MAY_DIFFER = {'solvers/"alpha.*"', "PIMPLE/maxCo", "levelMaxCo", "PIMPLE/startUp/rDeltaTSmoothingCoeff",
+MAY_DIFFER = {'solvers/"alpha.*"', "PIMPLE/maxCo", "levelMaxCo", "PIMPLE/rDeltaTSmoothingCoeff",
               "PIMPLE/startUp/maxCo", "PIMPLE/startUp/maxCoHold",
               'solvers/"U.*"/relTol'}
 
