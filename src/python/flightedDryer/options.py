@@ -53,6 +53,14 @@ def number(opts, key, lo, hi, units, lo_open=True, hi_open=False):
     return v
 
 
+def whole(opts, key, lo, hi, units, lo_open=True, hi_open=False):
+    """The option's value, a whole number in the range of number()."""
+    v = number(opts, key, lo, hi, units, lo_open, hi_open)
+    if v != int(v):
+        raise InputError("%s = %s is not a whole number of %s" % (key, opts[key], units))
+    return int(v)
+
+
 def choice(opts, key, allowed, default=None):
     """A named option: one of `allowed` (default: its first)."""
     v = opts.get(key, default if default is not None else allowed[0])

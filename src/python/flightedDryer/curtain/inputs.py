@@ -7,7 +7,7 @@ import os
 
 from .. import gas
 from ..errors import InputError
-from ..options import choice, number, number_list
+from ..options import choice, number, number_list, whole
 from . import dictionaries as fd
 from .settings import (DEFAULT_TEMPLATE, GAS_MODELS, LEVELS, MAX_LAYER, MIN_FALL_CELLS, MIN_LAYER,
                        MIN_SECTION_CELLS, PACKED_SLOT_FRACTION, PARTICLE_PARTICLE_DRAG, PARTICLE_TURBULENCE,
@@ -101,9 +101,7 @@ def check_inputs(opts):
         levels = fd.keywords(ml, "levels") or levels
     if s["level"] not in levels:
         raise InputError("-level '%s' is not one of %s" % (s["level"], " ".join(levels)))
-    s["np"] = int(number(opts, "-np", 1, 64, "processes", lo_open=False)) if "-np" in opts else 1
-    if "-np" in opts and float(opts["-np"]) != s["np"]:
-        raise InputError("-np = %s is not a whole number" % opts["-np"])
+    s["np"] = whole(opts, "-np", 1, 64, "processes", lo_open=False) if "-np" in opts else 1
     s["drag"] = choice(opts, "-drag", drag_laws(), "SchillerNaumann")
     s["sphericity"] = number(opts, "-sphericity", 0, 1, "") if "-sphericity" in opts else 1.0
     s["particleTurbulence"] = choice(opts, "-particleTurbulence", PARTICLE_TURBULENCE)
@@ -135,9 +133,7 @@ def check_inputs(opts):
     # the first iteration the steady window may end the run at (default: one
     # window on, setUp.check_from); at most the first stage's N iterations
     if "-steadyFrom" in opts:
-        s["steadyFrom"] = int(number(opts, "-steadyFrom", 0, n, "iterations", lo_open=False))
-        if float(opts["-steadyFrom"]) != s["steadyFrom"]:
-            raise InputError("-steadyFrom = %s is not a whole number of iterations" % opts["-steadyFrom"])
+        s["steadyFrom"] = whole(opts, "-steadyFrom", 0, n, "iterations", lo_open=False)
     # solids fraction at the slot: spill/(rho b v) below packing
     alpha_slot = slot_solids_fraction(s["spill"], s["rho"], thickness, release)
     if alpha_slot >= alpha_max:

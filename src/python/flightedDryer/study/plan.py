@@ -194,6 +194,9 @@ def cpu_estimate_s(g, study):
     points = len(g["gasVelocity"]) * len(g["spillRate"])
     with open(SWEEP_RUNS, newline="") as f:
         taken = [float(r["cold_iterations"]) for r in csv.DictReader(f)]
+    if not taken or not all(math.isfinite(x) and x > 0 for x in taken):
+        raise InputError("%s: column cold_iterations must hold positive finite numbers (rerun "
+                         "tests/benchmarks/warmStart/run)" % SWEEP_RUNS)
     its = min(sum(taken) / len(taken), study["iterations"])
     return points * sum(RUN_OVERHEAD_S + k * per_m * y * its for y in g["floors"])
 
