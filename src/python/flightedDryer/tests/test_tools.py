@@ -5,8 +5,6 @@ second of CPU to every run of a sweep and may lack those packages)."""
 
 import os
 
-import pytest
-
 from flightedDryer import PROJECT
 
 INTERPRETER = "#!/usr/bin/python3"
